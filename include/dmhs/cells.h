@@ -1,0 +1,29 @@
+/* Link cells over owned + ghost particles (counting sort by cell) and the pair
+ * list built from the half neighbour-cell stencil. */
+#ifndef DMHS_CELLS_H
+#define DMHS_CELLS_H
+#include <petscsys.h>
+#include "dmhs/particles.h"
+
+typedef struct cells {
+  double lo[DMHS_DIM]; /* lower corner of the covered region (box minus ghost width) */
+  double size;         /* cell edge >= cutoff */
+  PetscInt n[DMHS_DIM];
+  PetscInt *start;  /* n cells + 1 offsets into order */
+  PetscInt *order;  /* particle indices sorted by cell */
+  PetscInt *cell_of;
+  PetscInt n_alloc_cells, n_alloc_particles;
+  /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
+  PetscInt n_pairs, n_alloc_pairs;
+  PetscInt *pair_i, *pair_j;
+} cells;
+
+PetscErrorCode cells_create(cells *c);
+PetscErrorCode cells_destroy(cells *c);
+/* Sort particles [0, n_owned + n_ghost) into cells covering [lo, hi] and list every pair
+ * closer than cutoff. Pairs of two ghosts, and pairs of two walls, are left out: nobody
+ * owns the first, and walls do not act on each other. */
+PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
+                                 const double hi[DMHS_DIM], double cutoff);
+
+#endif

@@ -1,0 +1,16 @@
+/* Every PetscLogEvent and stage of dmhs, registered in one place. */
+#ifndef DMHS_EVENTS_H
+#define DMHS_EVENTS_H
+#include <petsclog.h>
+
+typedef struct dmhs_events {
+  PetscLogStage stage_setup, stage_steps;
+  PetscLogEvent integrate, migrate, halo_build, halo_forward, pairs;
+  PetscLogEvent sph_density, sph_eos, sph_wall, sph_force, body_force;
+  PetscLogEvent diagnostics, output, check_state;
+} dmhs_events;
+
+extern dmhs_events events;
+PetscErrorCode events_register(void);
+
+#endif

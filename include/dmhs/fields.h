@@ -1,0 +1,34 @@
+/* The field table: one row per per-particle array, saying its name, width,
+ * element type and where it goes (migration, ghosts, checkpoint, output). */
+#ifndef DMHS_FIELDS_H
+#define DMHS_FIELDS_H
+#include <stddef.h>
+
+typedef enum { FIELD_REAL, FIELD_INT, FIELD_INT64 } field_kind;
+
+enum {
+  FIELD_MIGRATE = 1u << 0,    /* moves with an owned particle to its new rank */
+  FIELD_GHOST = 1u << 1,      /* copied to ghosts at every ghost build */
+  FIELD_CHECKPOINT = 1u << 2, /* saved in checkpoints (exact restart) */
+  FIELD_OUTPUT = 1u << 3      /* written to snapshots */
+};
+
+typedef struct {
+  const char *name;
+  int width;       /* components per particle */
+  field_kind kind; /* element type */
+  size_t offset;   /* offsetof(particles, <pointer member>) */
+  unsigned flags;
+  const char *unit;
+} field_desc;
+
+/* The whole table and its length. */
+const field_desc *fields_table(size_t *count);
+/* Bytes of one particle's row of a field. */
+size_t fields_row_bytes(const field_desc *f);
+/* Address of the pointer member a field lives in, inside a particles struct. */
+void **fields_member(void *particles_struct, const field_desc *f);
+/* A field by name, or NULL. */
+const field_desc *fields_find(const char *name);
+
+#endif

@@ -1,0 +1,29 @@
+/* The physics-module interface: a small struct of functions a scene enables.
+ * Dispatch happens once per sweep, never per pair. */
+#ifndef DMHS_MODULE_H
+#define DMHS_MODULE_H
+#include <petscsys.h>
+#include <petscviewer.h>
+
+struct sim;
+struct dt_limits;
+
+enum { MODULE_NEEDS_PAIRS = 1u << 0, MODULE_NEEDS_BONDS = 1u << 1, MODULE_NEEDS_ANGLES = 1u << 2 };
+
+typedef struct module module;
+struct module {
+  const char *name;
+  unsigned needs;
+  double reach; /* longest interaction distance [m]; sets the ghost width */
+  PetscErrorCode (*set_from_options)(module *self, struct sim *s);
+  PetscErrorCode (*setup)(module *self, struct sim *s);
+  /* One whole sweep: adds accelerations / density rates of owned particles. */
+  PetscErrorCode (*compute)(module *self, struct sim *s);
+  /* Appends this module's time-step limits. */
+  PetscErrorCode (*max_dt)(module *self, struct sim *s, struct dt_limits *limits);
+  PetscErrorCode (*view)(module *self, struct sim *s, PetscViewer viewer);
+  PetscErrorCode (*destroy)(module *self);
+  void *data;
+};
+
+#endif

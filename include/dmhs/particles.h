@@ -1,0 +1,50 @@
+/* Struct-of-arrays particle store: owned particles first, ghosts after.
+ * Every per-particle array is one row of the field table (fields.c); growing,
+ * ghost copies, checkpoint and output all loop over that table. */
+#ifndef DMHS_PARTICLES_H
+#define DMHS_PARTICLES_H
+#include <petscsys.h>
+
+#define DMHS_DIM 2
+
+/* Fluid and solid share one store, told apart by type. */
+typedef enum {
+  PTYPE_FLUID = 0, /* SPH liquid, integrated */
+  PTYPE_WALL = 1,  /* SPH wall: prescribed velocity, boundary values extrapolated (sph_wall.c) */
+  PTYPE_SOLID = 2, /* bonded particle that is also an SPH particle, integrated */
+  PTYPE_COUNT
+} particle_type;
+
+typedef struct particles {
+  PetscInt n_owned;  /* particles [0, n_owned) are owned by this rank */
+  PetscInt n_ghost;  /* particles [n_owned, n_owned + n_ghost) are copies (images or other ranks) */
+  PetscInt capacity; /* allocated rows of every field */
+  PetscInt64 *gid;   /* global id, unique across ranks, stable for the whole run */
+  PetscInt *type;    /* particle_type */
+  PetscInt *tag;     /* user tag (tracked sets); 0 = none */
+  double (*x)[DMHS_DIM];      /* position [m] */
+  double (*v)[DMHS_DIM];      /* velocity [m/s]; half-step value between the two kicks */
+  double (*v_est)[DMHS_DIM];  /* predicted velocity at the force evaluation [m/s] */
+  double (*v_visc)[DMHS_DIM]; /* velocity seen by the viscous term (walls: extrapolated) [m/s] */
+  double (*a)[DMHS_DIM];      /* acceleration [m/s^2] */
+  double (*x0)[DMHS_DIM];     /* initial position, for displacement diagnostics [m] */
+  double *mass;               /* [kg] per unit depth */
+  double *rho;                /* density [kg/m^3] */
+  double *drho;               /* density rate [kg/m^3/s] */
+  double *p;                  /* pressure [Pa] */
+} particles;
+
+PetscErrorCode particles_create(particles *ps);
+PetscErrorCode particles_destroy(particles *ps);
+/* Make room for at least n rows (owned + ghost); contents of existing rows are kept. */
+PetscErrorCode particles_reserve(particles *ps, PetscInt n);
+/* Append one owned particle (ghosts must be empty); returns its local index. */
+PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type type,
+                                   const double x[DMHS_DIM], const double v[DMHS_DIM],
+                                   double mass, double rho, PetscInt *index);
+/* Copy every field row flagged by `flags` from row src to row dst. */
+void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flags);
+/* Number of owned particles of a type on this rank. */
+PetscInt particles_count_type(const particles *ps, particle_type type);
+
+#endif

@@ -1,0 +1,22 @@
+/* A scene builds one case: geometry, the modules it needs and its diagnostics. */
+#ifndef DMHS_SCENE_H
+#define DMHS_SCENE_H
+#include <petscsys.h>
+
+struct sim;
+
+typedef struct scene scene;
+struct scene {
+  const char *name;
+  PetscErrorCode (*set_from_options)(scene *self, struct sim *s);
+  /* Creates domain, particles and enables modules (sim_enable_module). */
+  PetscErrorCode (*build)(scene *self, struct sim *s);
+  /* Called after every completed step (and once before step 1 with step = 0). */
+  PetscErrorCode (*diagnose)(scene *self, struct sim *s);
+  /* End-of-run report. */
+  PetscErrorCode (*finish)(scene *self, struct sim *s);
+  PetscErrorCode (*destroy)(scene *self);
+  void *data;
+};
+
+#endif

@@ -1,0 +1,10 @@
+/* Constructors of the scenes the registry knows. */
+#ifndef DMHS_SCENES_H
+#define DMHS_SCENES_H
+#include "dmhs/scene.h"
+
+PetscErrorCode poiseuille_scene_create(scene **out); /* scenes/poiseuille.c */
+PetscErrorCode couette_scene_create(scene **out);    /* scenes/couette.c */
+PetscErrorCode box_scene_create(scene **out);        /* scenes/box.c */
+
+#endif

@@ -1,0 +1,65 @@
+/* struct sim owns everything: run control, domain, particles, ghosts, cells,
+ * the enabled modules and the scene. The step loop lives in sim.c. */
+#ifndef DMHS_SIM_H
+#define DMHS_SIM_H
+#include <petscsys.h>
+#include "dmhs/particles.h"
+#include "dmhs/domain.h"
+#include "dmhs/halo.h"
+#include "dmhs/cells.h"
+#include "dmhs/module.h"
+#include "dmhs/scene.h"
+#include "dmhs/sph.h"
+
+#define SIM_MAX_MODULES 16
+
+typedef enum { PREFLIGHT_ERROR, PREFLIGHT_WARN } preflight_action;
+extern const char *const preflight_action_names[];
+
+typedef struct sim {
+  MPI_Comm comm;
+  PetscMPIInt rank, size;
+
+  /* run control */
+  double t, dt, t_end;
+  PetscInt step;
+  double output_interval, next_output_t; /* physical time between output rows/snapshots */
+  double progress_interval, next_progress_t;
+  char output_dir[PETSC_MAX_PATH_LEN];
+  PetscBool quiet;
+  preflight_action preflight;
+
+  /* state */
+  domain dom;
+  double dx; /* rest particle spacing [m], set by the scene */
+  particles ps;
+  halo hal;
+  cells cel;
+  double pair_cutoff; /* largest pair reach among modules that need pairs */
+
+  /* physics */
+  sph_params sph;
+  PetscBool sph_enabled;
+  double body_accel[DMHS_DIM]; /* body acceleration on fluid at the current time [m/s^2] */
+  module *modules[SIM_MAX_MODULES];
+  int n_modules;
+  scene *scn;
+
+  /* timing */
+  double loop_start_wtime, loop_seconds;
+  PetscInt64 particle_steps; /* owned particles x steps, summed over ranks */
+} sim;
+
+PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only);
+PetscErrorCode sim_run(sim *s);
+PetscErrorCode sim_destroy(sim **s);
+/* Called by scenes: adds a module (by registry name) and runs its options pass. */
+PetscErrorCode sim_enable_module(sim *s, const char *name, module **out);
+/* Runs every enabled module's compute on the current positions: the force evaluation. */
+PetscErrorCode sim_compute_forces(sim *s);
+/* Rebuilds ghosts and pairs for the current positions. */
+PetscErrorCode sim_rebuild_neighbours(sim *s);
+/* Path of a file in the output directory. */
+PetscErrorCode sim_output_path(const sim *s, const char *name, char *path, size_t len);
+
+#endif

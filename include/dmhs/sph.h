@@ -1,0 +1,32 @@
+/* SPH parameters shared by the sph_* files, and the "sph" physics module that
+ * runs density (summation or continuity), equation of state, wall boundary
+ * values and the momentum equation, in that order, once per step. */
+#ifndef DMHS_SPH_H
+#define DMHS_SPH_H
+#include <petscsys.h>
+#include "dmhs/module.h"
+
+typedef enum { SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND } sph_kernel_kind;
+typedef enum { SPH_EOS_TAIT, SPH_EOS_LINEAR, SPH_EOS_LINEAR_SHIFTED } sph_eos_kind;
+typedef enum { SPH_DENSITY_CONTINUITY, SPH_DENSITY_SUMMATION } sph_density_kind;
+
+extern const char *const sph_kernel_names[];
+extern const char *const sph_eos_names[];
+extern const char *const sph_density_names[];
+
+typedef struct sph_params {
+  sph_kernel_kind kernel;
+  double h;        /* kernel support radius [m] (W = 0 for r >= h, LAMMPS convention) */
+  double rho0;     /* reference density [kg/m^3] */
+  double c0;       /* reference sound speed [m/s] */
+  double nu;       /* kinematic viscosity [m^2/s] */
+  sph_eos_kind eos;
+  sph_density_kind density;
+  double av_alpha; /* Monaghan artificial viscosity (0 = off) */
+  double av_beta;
+} sph_params;
+
+/* Registers the sph options into s->sph (defaults already there) and returns the module. */
+PetscErrorCode sph_module_create(module **m);
+
+#endif

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Runs one case end to end: installs what is missing, builds, runs dmhs on the
+# options file, then makes the case's plots.
+#   scripts/run.sh input/poiseuille.opts [more dmhs options]
+# Environment: DMHS_NP (MPI ranks, default 1).
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ $# -lt 1 ]; then
+  echo "usage: scripts/run.sh <options-file> [dmhs options...]" >&2
+  exit 2
+fi
+opts="$1"; shift
+if [ ! -r "$opts" ]; then
+  echo "run.sh: cannot read options file '$opts'" >&2
+  exit 2
+fi
+"$repo/scripts/setup.sh"
+build="${DMHS_BUILD_DIR:-$repo/build}"
+np="${DMHS_NP:-1}"
+mpirun_flags=(--oversubscribe)
+[ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
+mpirun "${mpirun_flags[@]}" -n "$np" "$build/dmhs" -options_file "$opts" "$@"
+# The output directory is the one the options chose; post-process it if it has an error history.
+outdir=$(awk '$1=="-output_dir"{print $2}' "$opts" | tail -n 1)
+for ((i = 1; i <= $#; i++)); do
+  if [ "${!i}" = "-output_dir" ]; then j=$((i + 1)); outdir="${!j}"; fi
+done
+outdir="${outdir:-output}"
+if [ -f "$outdir/error.csv" ]; then
+  /usr/bin/python3 "$repo/scripts/post/plot_channel.py" "$outdir"
+fi

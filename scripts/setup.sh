@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs what dmhs needs (when missing), then configures and builds it.
+# Sourced by scripts/run.sh and scripts/test.sh; usable alone: scripts/setup.sh
+# Environment: DMHS_BUILD_DIR (default: build), DMHS_BUILD_TYPE (default: Release).
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${DMHS_BUILD_DIR:-$repo/build}"
+
+# Debian packages: compilers, MPI, PETSc 3.18, parallel HDF5, METIS, GSL, cmocka,
+# and Debian's own python3 with numpy/h5py/matplotlib for scripts/post and tests.
+packages=(build-essential cmake pkg-config openmpi-bin libopenmpi-dev petsc-dev
+          libhdf5-openmpi-dev libmetis-dev libgsl-dev libcmocka-dev
+          python3 python3-numpy python3-h5py python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null; then
+    echo "setup: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -q
+    apt-get install -y -q --no-install-recommends "${missing[@]}"
+  else
+    echo "setup: missing Debian packages: ${missing[*]}" >&2
+    echo "setup: install them (as root: apt-get install ${missing[*]}) and run again" >&2
+    exit 1
+  fi
+fi
+
+cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE="${DMHS_BUILD_TYPE:-Release}" >/dev/null
+cmake --build "$build" --parallel "$(nproc)"

@@ -1,0 +1,123 @@
+/* Link cells by counting sort, and the pair list from the half stencil
+ * (self, E, NW, N, NE) so each pair is found once. */
+#include <math.h>
+#include "dmhs/cells.h"
+
+PetscErrorCode cells_create(cells *c) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(c, sizeof(*c)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode cells_destroy(cells *c) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree3(c->start, c->order, c->cell_of));
+  PetscCall(PetscFree2(c->pair_i, c->pair_j));
+  PetscCall(PetscMemzero(c, sizeof(*c)));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode cells_ensure(cells *c, PetscInt n_cells, PetscInt n_particles) {
+  PetscFunctionBeginUser;
+  if (n_cells + 1 > c->n_alloc_cells || n_particles > c->n_alloc_particles) {
+    PetscCall(PetscFree3(c->start, c->order, c->cell_of));
+    c->n_alloc_cells = PetscMax(n_cells + 1, c->n_alloc_cells);
+    c->n_alloc_particles = PetscMax(n_particles + n_particles / 4, c->n_alloc_particles);
+    PetscCall(PetscMalloc3(c->n_alloc_cells, &c->start, c->n_alloc_particles, &c->order,
+                           c->n_alloc_particles, &c->cell_of));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode cells_grow_pairs(cells *c) {
+  PetscFunctionBeginUser;
+  {
+    PetscInt grown = PetscMax(1024, 2 * c->n_alloc_pairs);
+    PetscInt *pi, *pj;
+    PetscCall(PetscMalloc2(grown, &pi, grown, &pj));
+    if (c->n_pairs) {
+      PetscCall(PetscArraycpy(pi, c->pair_i, c->n_pairs));
+      PetscCall(PetscArraycpy(pj, c->pair_j, c->n_pairs));
+    }
+    PetscCall(PetscFree2(c->pair_i, c->pair_j));
+    c->pair_i = pi;
+    c->pair_j = pj;
+    c->n_alloc_pairs = grown;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
+                                 const double hi[DMHS_DIM], double cutoff) {
+  const PetscInt n = ps->n_owned + ps->n_ghost;
+  PetscFunctionBeginUser;
+  PetscCheck(cutoff > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cells: cutoff must be > 0");
+  c->size = cutoff;
+  PetscInt n_cells = 1;
+  for (int k = 0; k < DMHS_DIM; k++) {
+    c->lo[k] = lo[k];
+    c->n[k] = PetscMax(1, (PetscInt)floor((hi[k] - lo[k]) / cutoff));
+    n_cells *= c->n[k];
+  }
+  PetscCall(cells_ensure(c, n_cells, n));
+  const double inv[DMHS_DIM] = {c->n[0] / (hi[0] - lo[0]), c->n[1] / (hi[1] - lo[1])};
+
+  /* counting sort by cell; positions outside the covered region clamp to edge cells */
+  PetscCall(PetscArrayzero(c->start, n_cells + 1));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt ix = (PetscInt)floor((ps->x[i][0] - lo[0]) * inv[0]);
+    PetscInt iy = (PetscInt)floor((ps->x[i][1] - lo[1]) * inv[1]);
+    ix = PetscMin(PetscMax(ix, 0), c->n[0] - 1);
+    iy = PetscMin(PetscMax(iy, 0), c->n[1] - 1);
+    c->cell_of[i] = iy * c->n[0] + ix;
+    c->start[c->cell_of[i] + 1]++;
+  }
+  for (PetscInt k = 0; k < n_cells; k++) c->start[k + 1] += c->start[k];
+  {
+    PetscInt *fill;
+    PetscCall(PetscMalloc1(n_cells, &fill));
+    PetscCall(PetscArraycpy(fill, c->start, n_cells));
+    for (PetscInt i = 0; i < n; i++) c->order[fill[c->cell_of[i]]++] = i;
+    PetscCall(PetscFree(fill));
+  }
+
+  /* half stencil: each unordered pair of cells is visited once */
+  static const int stencil[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+  const double cut2 = cutoff * cutoff;
+  const PetscInt n_owned = ps->n_owned;
+  c->n_pairs = 0;
+  for (PetscInt cy = 0; cy < c->n[1]; cy++) {
+    for (PetscInt cx = 0; cx < c->n[0]; cx++) {
+      const PetscInt cell = cy * c->n[0] + cx;
+      for (PetscInt a = c->start[cell]; a < c->start[cell + 1]; a++) {
+        const PetscInt i = c->order[a];
+        for (int s = -1; s < 4; s++) {
+          PetscInt first, last;
+          if (s < 0) { /* own cell: later entries only */
+            first = a + 1;
+            last = c->start[cell + 1];
+          } else {
+            const PetscInt nx = cx + stencil[s][0], ny = cy + stencil[s][1];
+            if (nx < 0 || nx >= c->n[0] || ny >= c->n[1]) continue;
+            const PetscInt other = ny * c->n[0] + nx;
+            first = c->start[other];
+            last = c->start[other + 1];
+          }
+          for (PetscInt b = first; b < last; b++) {
+            const PetscInt j = c->order[b];
+            if (i >= n_owned && j >= n_owned) continue; /* nobody owns a ghost-ghost pair */
+            if (ps->type[i] == PTYPE_WALL && ps->type[j] == PTYPE_WALL) continue;
+            const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
+            if (dx * dx + dy * dy >= cut2) continue;
+            /* the owned (or lower) index first keeps sweeps' writes mostly on owned rows */
+            if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
+            c->pair_i[c->n_pairs] = PetscMin(i, j);
+            c->pair_j[c->n_pairs] = PetscMax(i, j);
+            c->n_pairs++;
+          }
+        }
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,41 @@
+/* The simulation box: minimum image and wrapping along periodic directions. */
+#include <math.h>
+#include "dmhs/domain.h"
+
+void domain_min_image(const domain *d, double dx[DMHS_DIM]) {
+  for (int k = 0; k < DMHS_DIM; k++) {
+    if (!d->periodic[k]) continue;
+    double L = domain_length(d, k);
+    dx[k] -= L * round(dx[k] / L);
+  }
+}
+
+void domain_wrap(const domain *d, double x[DMHS_DIM]) {
+  for (int k = 0; k < DMHS_DIM; k++) {
+    if (!d->periodic[k]) continue;
+    double L = domain_length(d, k);
+    /* floor handles particles more than one period away (never expected, but exact) */
+    x[k] -= L * floor((x[k] - d->lo[k]) / L);
+    if (x[k] >= d->hi[k]) x[k] = d->lo[k]; /* round-off at the upper edge */
+  }
+}
+
+PetscBool domain_contains(const domain *d, const double x[DMHS_DIM]) {
+  for (int k = 0; k < DMHS_DIM; k++)
+    if (!d->periodic[k] && (x[k] < d->lo[k] || x[k] > d->hi[k])) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+PetscErrorCode domain_check_ghost_width(const domain *d, double width) {
+  PetscFunctionBeginUser;
+  for (int k = 0; k < DMHS_DIM; k++) {
+    PetscCheck(d->hi[k] > d->lo[k], PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "domain: empty box along axis %d: [%g, %g]", k, d->lo[k], d->hi[k]);
+    PetscCheck(!d->periodic[k] || domain_length(d, k) > 2.0 * width, PETSC_COMM_SELF,
+               PETSC_ERR_ARG_OUTOFRANGE,
+               "domain: periodic length %g m along axis %d is not larger than twice the "
+               "interaction reach %g m; make the box longer or the support (-sph_h) smaller",
+               domain_length(d, k), k, width);
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,27 @@
+/* Every PetscLogEvent and stage of dmhs, registered in one place, so that
+ * -log_view shows where the time of each module went. */
+#include "dmhs/events.h"
+
+dmhs_events events;
+
+PetscErrorCode events_register(void) {
+  PetscClassId id;
+  PetscFunctionBeginUser;
+  PetscCall(PetscClassIdRegister("dmhs", &id));
+  PetscCall(PetscLogStageRegister("dmhs setup", &events.stage_setup));
+  PetscCall(PetscLogStageRegister("dmhs steps", &events.stage_steps));
+  PetscCall(PetscLogEventRegister("Integrate", id, &events.integrate));
+  PetscCall(PetscLogEventRegister("Migrate", id, &events.migrate));
+  PetscCall(PetscLogEventRegister("HaloBuild", id, &events.halo_build));
+  PetscCall(PetscLogEventRegister("HaloForward", id, &events.halo_forward));
+  PetscCall(PetscLogEventRegister("PairList", id, &events.pairs));
+  PetscCall(PetscLogEventRegister("SphDensity", id, &events.sph_density));
+  PetscCall(PetscLogEventRegister("SphEos", id, &events.sph_eos));
+  PetscCall(PetscLogEventRegister("SphWall", id, &events.sph_wall));
+  PetscCall(PetscLogEventRegister("SphForce", id, &events.sph_force));
+  PetscCall(PetscLogEventRegister("BodyForce", id, &events.body_force));
+  PetscCall(PetscLogEventRegister("Diagnostics", id, &events.diagnostics));
+  PetscCall(PetscLogEventRegister("Output", id, &events.output));
+  PetscCall(PetscLogEventRegister("CheckState", id, &events.check_state));
+  PetscFunctionReturn(0);
+}

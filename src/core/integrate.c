@@ -1,0 +1,146 @@
+/* Velocity Verlet, kick-drift-kick, for positions, velocities and (with the
+ * continuity equation) densities, as LAMMPS' fix sph does:
+ *   v_est  = v^n + dt a^n                  (predicted velocity for the viscous
+ *                                           and continuity terms at t^{n+1})
+ *   v      = v^n + dt/2 a^n,  rho = rho^n + dt/2 drho^n
+ *   x^{n+1} = x^n + dt v
+ *   forces at x^{n+1} -> a^{n+1}, drho^{n+1}
+ *   v^{n+1} = v + dt/2 a^{n+1},  rho^{n+1} = rho + dt/2 drho^{n+1}
+ * Walls move with their prescribed velocity and are not kicked.
+ * Also: the time-step limits of every module (the stability report) and the
+ * per-step state check (no NaN ever reaches an output file). */
+#include <math.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/integrate.h"
+#include "dmhs/events.h"
+
+PetscErrorCode dt_limits_add(dt_limits *l, const char *name, const char *formula, double value) {
+  PetscFunctionBeginUser;
+  PetscCheck(l->n < DT_LIMITS_MAX, PETSC_COMM_SELF, PETSC_ERR_PLIB, "too many time-step limits");
+  PetscCall(PetscStrncpy(l->item[l->n].name, name, sizeof(l->item[l->n].name)));
+  PetscCall(PetscStrncpy(l->item[l->n].formula, formula, sizeof(l->item[l->n].formula)));
+  l->item[l->n].value = value;
+  l->n++;
+  PetscFunctionReturn(0);
+}
+
+double dt_limits_min(const dt_limits *l, int *which) {
+  double best = INFINITY;
+  *which = -1;
+  for (int k = 0; k < l->n; k++)
+    if (l->item[k].value < best) {
+      best = l->item[k].value;
+      *which = k;
+    }
+  return best;
+}
+
+PetscErrorCode integrate_first_half(sim *s) {
+  particles *ps = &s->ps;
+  const double dt = s->dt, half = 0.5 * s->dt;
+  const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] == PTYPE_WALL) {
+      for (int k = 0; k < DMHS_DIM; k++) {
+        ps->v_est[i][k] = ps->v[i][k];
+        ps->x[i][k] += dt * ps->v[i][k];
+      }
+      continue;
+    }
+    for (int k = 0; k < DMHS_DIM; k++) {
+      ps->v_est[i][k] = ps->v[i][k] + dt * ps->a[i][k];
+      ps->v[i][k] += half * ps->a[i][k];
+      ps->x[i][k] += dt * ps->v[i][k];
+    }
+    if (continuity) ps->rho[i] += half * ps->drho[i];
+  }
+  PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode integrate_second_half(sim *s) {
+  particles *ps = &s->ps;
+  const double half = 0.5 * s->dt;
+  const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] == PTYPE_WALL) continue;
+    for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half * ps->a[i][k];
+    if (continuity) ps->rho[i] += half * ps->drho[i];
+  }
+  PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Lattice points (other than the origin) strictly inside the support at spacing dx. */
+static int neighbours_at_rest(double h, double dx) {
+  const int reach = (int)ceil(h / dx);
+  int n = 0;
+  for (int a = -reach; a <= reach; a++)
+    for (int b = -reach; b <= reach; b++)
+      if ((a || b) && sqrt((double)(a * a + b * b)) * dx < h) n++;
+  return n;
+}
+
+PetscErrorCode integrate_stability_report(sim *s) {
+  dt_limits limits = {0};
+  int which, problems = 0;
+  PetscFunctionBeginUser;
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->max_dt) PetscCall(s->modules[m]->max_dt(s->modules[m], s, &limits));
+  const double dt_min = dt_limits_min(&limits, &which);
+  if (s->dt <= 0) {
+    PetscCheck(which >= 0, s->comm, PETSC_ERR_ARG_WRONG,
+               "-dt 0 (automatic) needs at least one time-step limit, and no module gives one");
+    s->dt = dt_min;
+  }
+  PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
+  for (int k = 0; k < limits.n; k++) {
+    const dt_limit *l = &limits.item[k];
+    const PetscBool over = s->dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s\n", l->name, l->formula, l->value,
+                          s->dt / l->value, over ? "  EXCEEDED" : ""));
+    problems += over;
+  }
+  if (s->sph_enabled && s->dx > 0) {
+    const int nb = neighbours_at_rest(s->sph.h, s->dx);
+    const PetscBool few = nb < 12 ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(PetscPrintf(s->comm, "  %-18s h/dx = %.3g: %d neighbours inside the support at rest spacing%s\n",
+                          "sph support", s->sph.h / s->dx, nb,
+                          few ? "  TOO FEW (need >= 12 in 2D; h <= dx leaves none)" : ""));
+    problems += few;
+  }
+  if (problems) {
+    const char *what = "dt exceeds a time-step limit or the kernel support holds too few neighbours "
+                       "(see the report above): lower -dt (or -dt 0 for automatic) / raise -sph_h";
+    PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "pre-flight check failed: %s; -preflight warn runs anyway", what);
+    PetscCall(PetscPrintf(s->comm, "WARNING: pre-flight check: %s (continuing: -preflight warn)\n", what));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode integrate_check_state(sim *s) {
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.check_state, 0, 0, 0, 0));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    const char *bad = NULL;
+    if (!isfinite(ps->x[i][0]) || !isfinite(ps->x[i][1])) bad = "position";
+    else if (!isfinite(ps->v[i][0]) || !isfinite(ps->v[i][1])) bad = "velocity";
+    else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0) bad = "density";
+    else if (!isfinite(ps->p[i])) bad = "pressure";
+    PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_FP,
+               "run blew up at step %" PetscInt_FMT ", t = %g s: particle gid %" PetscInt64_FMT
+               " (type %" PetscInt_FMT ") has a non-finite or invalid %s (x = %g %g, v = %g %g, rho = %g); "
+               "try a smaller -dt (see the stability report)",
+               s->step, s->t, ps->gid[i], ps->type[i], bad, ps->x[i][0], ps->x[i][1], ps->v[i][0], ps->v[i][1],
+               ps->rho[i]);
+  }
+  PetscCall(PetscLogEventEnd(events.check_state, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

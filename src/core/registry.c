@@ -1,0 +1,103 @@
+/* Scenes and physics modules by name (PetscFunctionList), so -scene picks a
+ * builder and -help can list every scene's and module's options. The two
+ * tables below are the only place a new scene or module is registered. */
+#include <string.h>
+#include "dmhs/registry.h"
+#include "dmhs/sim.h"
+#include "dmhs/body_force.h"
+#include "dmhs/scenes.h"
+
+static const struct {
+  const char *name;
+  PetscErrorCode (*create)(scene **);
+} scene_table[] = {
+    {"poiseuille", poiseuille_scene_create},
+    {"couette", couette_scene_create},
+    {"box", box_scene_create},
+};
+
+static const struct {
+  const char *name;
+  PetscErrorCode (*create)(module **);
+} module_table[] = {
+    {"sph", sph_module_create},
+    {"body_force", body_force_module_create},
+};
+
+#define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))
+#define N_MODULES (sizeof(module_table) / sizeof(module_table[0]))
+
+static PetscFunctionList scene_list, module_list;
+
+PetscErrorCode registry_initialize(void) {
+  PetscFunctionBeginUser;
+  if (scene_list) PetscFunctionReturn(0);
+  for (size_t k = 0; k < N_SCENES; k++)
+    PetscCall(PetscFunctionListAdd(&scene_list, scene_table[k].name, scene_table[k].create));
+  for (size_t k = 0; k < N_MODULES; k++)
+    PetscCall(PetscFunctionListAdd(&module_list, module_table[k].name, module_table[k].create));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode registry_finalize(void) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&scene_list));
+  PetscCall(PetscFunctionListDestroy(&module_list));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode registry_scene_names(char *buf, size_t len) {
+  PetscFunctionBeginUser;
+  buf[0] = 0;
+  for (size_t k = 0; k < N_SCENES; k++) {
+    if (k) PetscCall(PetscStrlcat(buf, ", ", len));
+    PetscCall(PetscStrlcat(buf, scene_table[k].name, len));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode registry_create_scene(const char *name, scene **out) {
+  PetscErrorCode (*create)(scene **) = NULL;
+  char names[256];
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListFind(scene_list, name, &create));
+  PetscCall(registry_scene_names(names, sizeof(names)));
+  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "-scene %s: unknown scene (choose one of: %s)",
+             name, names);
+  PetscCall(create(out));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode registry_create_module(const char *name, module **out) {
+  PetscErrorCode (*create)(module **) = NULL;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListFind(module_list, name, &create));
+  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "unknown physics module '%s'", name);
+  PetscCall(create(out));
+  PetscFunctionReturn(0);
+}
+
+/* Every scene's options pass (which enables its modules, with the scene's
+ * defaults), then each module's options once. */
+PetscErrorCode registry_print_help(sim *s) {
+  PetscBool printed[N_MODULES] = {PETSC_FALSE};
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < N_SCENES; k++) {
+    scene *scn;
+    PetscCall(registry_create_scene(scene_table[k].name, &scn));
+    PetscCall(scn->set_from_options(scn, s));
+    for (int m = 0; m < s->n_modules; m++) {
+      for (size_t j = 0; j < N_MODULES; j++)
+        if (!strcmp(module_table[j].name, s->modules[m]->name) && !printed[j]) {
+          PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
+          printed[j] = PETSC_TRUE;
+        }
+      PetscCall(s->modules[m]->destroy(s->modules[m]));
+      PetscCall(PetscFree(s->modules[m]));
+    }
+    s->n_modules = 0;
+    PetscCall(scn->destroy(scn));
+    PetscCall(PetscFree(scn));
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,137 @@
+/* Error of v_x against an exact solution, as the run goes (see errors.h). */
+#include <math.h>
+#include <errno.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/errors.h"
+
+PetscErrorCode errors_set_from_options(errors *e, sim *s) {
+  PetscInt n = ERRORS_MAX_REPORTS;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  if (e->n_reports == 0) {
+    e->report_t[0] = 0.01;
+    e->report_t[1] = 0.1;
+    e->report_t[2] = 1.0;
+    e->n_reports = 3;
+  }
+  PetscOptionsBegin(s->comm, NULL, "Error against the series solution", NULL);
+  PetscCall(PetscOptionsRealArray("-error_report_times", "Times at which errors and profiles are reported [s]",
+                                  NULL, e->report_t, &n, &set));
+  PetscOptionsEnd();
+  if (set) e->n_reports = n;
+  for (PetscInt k = 0; k < e->n_reports; k++)
+    PetscCheck(e->report_t[k] > 0 && (k == 0 || e->report_t[k] > e->report_t[k - 1]), s->comm,
+               PETSC_ERR_ARG_OUTOFRANGE, "-error_report_times must be positive and increasing (entry %d = %g)",
+               (int)k, e->report_t[k]);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx, double v_ref) {
+  char path[PETSC_MAX_PATH_LEN];
+  PetscFunctionBeginUser;
+  PetscCheck(v_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "errors: the reference speed must be > 0 (got %g): is the flow driven at all?", v_ref);
+  e->exact = exact;
+  e->ctx = ctx;
+  e->v_ref = v_ref;
+  e->next_report = 0;
+  if (s->rank == 0) {
+    PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
+    e->csv = fopen(path, "w");
+    PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "cannot write %s", path);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
+  const particles *ps = &s->ps;
+  double local[3] = {0, 0, 0}, global[3];
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] != PTYPE_FLUID) continue;
+    const double d = (ps->v[i][0] - e->exact(ps->x[i][1], s->t, e->ctx)) / e->v_ref;
+    local[0] += d * d;
+    local[1] += 1.0;
+    local[2] = PetscMax(local[2], fabs(d));
+  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MAX, s->comm));
+  *l2 = global[1] > 0 ? sqrt(global[0] / global[1]) : 0.0;
+  *linf = global[2];
+  PetscFunctionReturn(0);
+}
+
+/* profile_t<t>.csv: one row per fluid particle, written to a temporary name
+ * and renamed so that a reader never sees half a file. Rank 0 writes; with
+ * several ranks the rows are gathered first. */
+static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
+  const particles *ps = &s->ps;
+  char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  PetscFunctionBeginUser;
+  PetscCheck(s->size == 1, s->comm, PETSC_ERR_SUP, "profiles on several ranks are not implemented");
+  PetscCall(PetscSNPrintf(name, sizeof(name), "profile_t%g.csv", t_report));
+  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  FILE *f = fopen(tmp, "w");
+  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
+  int ok = fprintf(f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
+  for (PetscInt i = 0; i < ps->n_owned && ok; i++)
+    if (ps->type[i] == PTYPE_FLUID)
+      ok = fprintf(f, "%.9e,%.9e,%.9e\n", ps->x[i][1], ps->v[i][0], e->exact(ps->x[i][1], s->t, e->ctx)) > 0;
+  ok = (fclose(f) == 0) && ok;
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
+             path, strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_on_step(errors *e, sim *s) {
+  const double half = 0.5 * s->dt;
+  const PetscBool output_step = s->step > 0 && s->t >= s->next_output_t - half ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool report_step =
+      e->next_report < e->n_reports && s->t >= e->report_t[e->next_report] - half ? PETSC_TRUE : PETSC_FALSE;
+  double l2, linf;
+  PetscFunctionBeginUser;
+  if (!output_step && !report_step) PetscFunctionReturn(0);
+  PetscCall(errors_compute(e, s, &l2, &linf));
+  const double wall = s->step > 0 ? MPI_Wtime() - s->loop_start_wtime : 0.0;
+  if (output_step && s->rank == 0) {
+    PetscCheck(fprintf(e->csv, "%" PetscInt_FMT ",%.9g,%.6g,%.6e,%.6e\n", s->step, s->t, wall, l2, linf) > 0 &&
+                   fflush(e->csv) == 0,
+               PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing error.csv failed (disk full?)");
+  }
+  if (report_step) {
+    const PetscInt k = e->next_report++;
+    e->reached_t[k] = s->t;
+    e->l2[k] = l2;
+    e->linf[k] = linf;
+    e->wall_s[k] = wall;
+    PetscCall(errors_write_profile(e, s, e->report_t[k]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_report(errors *e, sim *s) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(s->comm, "Error of v_x against the series solution (normalised by %.4g m/s):\n", e->v_ref));
+  PetscCall(PetscPrintf(s->comm, "  %10s  %12s  %12s  %10s\n", "t [s]", "L2 (RMS)", "Linf", "wall [s]"));
+  for (PetscInt k = 0; k < e->next_report; k++)
+    PetscCall(PetscPrintf(s->comm, "  %10.4g  %11.4f%%  %11.4f%%  %10.3f\n", e->reached_t[k], 100 * e->l2[k],
+                          100 * e->linf[k], e->wall_s[k]));
+  for (PetscInt k = e->next_report; k < e->n_reports; k++)
+    PetscCall(PetscPrintf(s->comm, "  %10.4g  (not reached: t_end = %g s)\n", e->report_t[k], s->t_end));
+  PetscCall(PetscPrintf(s->comm, "  wall-clock of the step loop: %.3f s\n", s->loop_seconds));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_destroy(errors *e) {
+  PetscFunctionBeginUser;
+  if (e->csv) {
+    PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing error.csv failed");
+    e->csv = NULL;
+  }
+  PetscFunctionReturn(0);
+}

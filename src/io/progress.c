@@ -1,0 +1,40 @@
+/* Progress line and end-of-run summary (rank 0 prints). */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/progress.h"
+
+static double particle_steps_per_second(const sim *s, double seconds) {
+  return seconds > 0 ? (double)s->particle_steps / seconds : 0.0;
+}
+
+PetscErrorCode progress_print(sim *s) {
+  const particles *ps = &s->ps;
+  double local[2] = {0, 0}, global[2];
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    local[0] = PetscMax(local[0], ps->v[i][0] * ps->v[i][0] + ps->v[i][1] * ps->v[i][1]);
+    if (ps->type[i] == PTYPE_FLUID && s->sph_enabled)
+      local[1] = PetscMax(local[1], PetscAbsReal(ps->rho[i] / s->sph.rho0 - 1.0));
+  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
+  const double elapsed = MPI_Wtime() - s->loop_start_wtime;
+  const double rate = particle_steps_per_second(s, elapsed);
+  const double eta = s->t > 0 ? elapsed * (s->t_end - s->t) / s->t : 0.0;
+  PetscCall(PetscPrintf(s->comm,
+                        "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
+                        "max|v| %.3e m/s  max|rho/rho0-1| %.2e\n",
+                        s->step, s->t, s->dt, rate, eta, sqrt(global[0]), global[1]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode progress_summary(sim *s) {
+  PetscInt n_owned = s->ps.n_owned, n_total;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&n_owned, &n_total, 1, MPIU_INT, MPI_SUM, s->comm));
+  PetscCall(PetscPrintf(s->comm,
+                        "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
+                        " steps to t = %g s, step loop %.3f s, particle-steps/s: %.4e\n",
+                        s->scn->name, n_total, (int)s->size, s->step, s->t, s->loop_seconds,
+                        particle_steps_per_second(s, s->loop_seconds)));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,100 @@
+/* Body force on liquid particles:
+ *   a_body(t) = F                         (-body_force_period 0)
+ *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
+ * plus gravity (0, -g). The current value is also left in sim->body_accel,
+ * where the wall pass reads it for the hydrostatic part of wall pressure. */
+#include "dmhs/sim.h"
+#include "dmhs/body_force.h"
+#include "dmhs/events.h"
+#include "dmhs/integrate.h"
+
+typedef struct {
+  double F[DMHS_DIM]; /* [m/s^2] */
+  double period;      /* [s], 0 = constant */
+  double gravity;     /* [m/s^2], along -y */
+} body_force_data;
+
+PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
+  body_force_data *d = m->data;
+  PetscFunctionBeginUser;
+  d->F[0] = fx;
+  d->F[1] = fy;
+  PetscFunctionReturn(0);
+}
+
+static void body_force_value(const body_force_data *d, double t, double a[DMHS_DIM]) {
+  const double phase = d->period > 0 ? sin(2.0 * M_PI * t / d->period) : 1.0;
+  a[0] = d->F[0] * phase;
+  a[1] = d->F[1] * phase - d->gravity;
+}
+
+static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
+  body_force_data *d = self->data;
+  PetscInt n = DMHS_DIM;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
+  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, NULL));
+  PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
+                             d->period, &d->period, NULL));
+  PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
+  PetscOptionsEnd();
+  PetscCheck(n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-body_force takes %d components Fx,Fy (got %d)",
+             DMHS_DIM, (int)n);
+  PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-body_force_period must be >= 0 (got %g)", d->period);
+  body_force_value(d, 0.0, s->body_accel);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode body_force_compute(module *self, sim *s) {
+  body_force_data *d = self->data;
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.body_force, 0, 0, 0, 0));
+  body_force_value(d, s->t, s->body_accel);
+  const double ax = s->body_accel[0], ay = s->body_accel[1];
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] != PTYPE_FLUID) continue;
+    ps->a[i][0] += ax;
+    ps->a[i][1] += ay;
+  }
+  PetscCall(PetscLogEventEnd(events.body_force, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* 0.25 sqrt(h_s/|a|) with h_s = h/2 and the peak |a| */
+static PetscErrorCode body_force_max_dt(module *self, sim *s, dt_limits *l) {
+  body_force_data *d = self->data;
+  PetscFunctionBeginUser;
+  const double amax = PetscSqrtReal(d->F[0] * d->F[0] + (PetscAbsReal(d->F[1]) + d->gravity) * (PetscAbsReal(d->F[1]) + d->gravity));
+  if (amax > 0 && s->sph_enabled)
+    PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2", 0.25 * PetscSqrtReal(0.5 * s->sph.h / amax)));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode body_force_view(module *self, sim *s, PetscViewer v) {
+  body_force_data *d = self->data;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2\n", d->F[0],
+                                   d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode body_force_destroy(module *self) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode body_force_module_create(module **m) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(m));
+  (*m)->name = "body_force";
+  (*m)->set_from_options = body_force_set_from_options;
+  (*m)->compute = body_force_compute;
+  (*m)->max_dt = body_force_max_dt;
+  (*m)->view = body_force_view;
+  (*m)->destroy = body_force_destroy;
+  PetscCall(PetscNew((body_force_data **)&(*m)->data));
+  PetscFunctionReturn(0);
+}

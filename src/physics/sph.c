@@ -1,0 +1,116 @@
+/* The "sph" physics module: options, the order of the SPH passes in a step,
+ * time-step limits and the echo of resolved parameters.
+ *   per step: [summation density] -> EOS -> wall values -> momentum (+ continuity) */
+#include "dmhs/sim.h"
+#include "dmhs/integrate.h"
+#include "sph_force.h"
+
+const char *const sph_kernel_names[] = {"lucy", "cubic", "wendland", "sph_kernel_kind", "SPH_KERNEL_", NULL};
+const char *const sph_eos_names[] = {"tait", "linear", "linear_shifted", "sph_eos_kind", "SPH_EOS_", NULL};
+const char *const sph_density_names[] = {"continuity", "summation", "sph_density_kind", "SPH_DENSITY_", NULL};
+
+typedef struct {
+  sph_wall_work *wall;
+} sph_data;
+
+static PetscErrorCode sph_set_from_options(module *self, sim *s) {
+  sph_params *sp = &s->sph;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "SPH liquid (module sph)", NULL);
+  PetscCall(PetscOptionsEnum("-sph_kernel", "Kernel: lucy, cubic (B-spline), wendland (C2)", NULL,
+                             sph_kernel_names, (PetscEnum)sp->kernel, (PetscEnum *)&sp->kernel, NULL));
+  PetscCall(PetscOptionsReal("-sph_h", "Kernel support radius h [m] (W = 0 for r >= h)", NULL,
+                             sp->h, &sp->h, NULL));
+  PetscCall(PetscOptionsReal("-sph_rho0", "Reference density [kg/m^3]", NULL, sp->rho0, &sp->rho0, NULL));
+  PetscCall(PetscOptionsReal("-sph_c0", "Reference sound speed [m/s]", NULL, sp->c0, &sp->c0, NULL));
+  PetscCall(PetscOptionsReal("-sph_nu", "Kinematic viscosity [m^2/s]", NULL, sp->nu, &sp->nu, NULL));
+  PetscCall(PetscOptionsEnum("-sph_eos", "Equation of state: tait, linear (c^2 rho), linear_shifted (c^2 (rho - rho0))",
+                             NULL, sph_eos_names, (PetscEnum)sp->eos, (PetscEnum *)&sp->eos, NULL));
+  PetscCall(PetscOptionsEnum("-sph_density", "Density: continuity (d rho/dt) or summation", NULL,
+                             sph_density_names, (PetscEnum)sp->density, (PetscEnum *)&sp->density, NULL));
+  PetscCall(PetscOptionsReal("-sph_av_alpha", "Monaghan artificial viscosity alpha [1] (0 = off)", NULL,
+                             sp->av_alpha, &sp->av_alpha, NULL));
+  PetscCall(PetscOptionsReal("-sph_av_beta", "Monaghan artificial viscosity beta [1]", NULL,
+                             sp->av_beta, &sp->av_beta, NULL));
+  PetscOptionsEnd();
+  PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
+  PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)", sp->rho0);
+  PetscCheck(sp->c0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_c0 must be > 0 (got %g)", sp->c0);
+  PetscCheck(sp->nu >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_nu must be >= 0 (got %g)", sp->nu);
+  PetscCheck(sp->av_alpha >= 0 && sp->av_beta >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_av_alpha and -sph_av_beta must be >= 0 (got %g, %g)", sp->av_alpha, sp->av_beta);
+  self->reach = sp->h;
+  s->sph_enabled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sph_setup(module *self, sim *s) {
+  sph_data *d = self->data;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(sph_wall_create(&d->wall));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sph_compute(module *self, sim *s) {
+  sph_data *d = self->data;
+  PetscFunctionBeginUser;
+  if (s->sph.density == SPH_DENSITY_SUMMATION) PetscCall(sph_density_summation(s));
+  PetscCall(sph_eos_compute(s));
+  PetscCall(sph_wall_compute(s, d->wall));
+  PetscCall(sph_force_compute(s));
+  PetscFunctionReturn(0);
+}
+
+/* The classic limits were derived for a smoothing length h_s with support 2 h_s;
+ * our h is the support, so they are evaluated with h_s = h/2. */
+static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
+  const sph_params *sp = &s->sph;
+  const double hs = 0.5 * sp->h;
+  double vmax = 0.0, vmax_global;
+  PetscFunctionBeginUser;
+  (void)self;
+  for (PetscInt i = 0; i < s->ps.n_owned; i++)
+    vmax = PetscMax(vmax, PetscSqrtReal(s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]));
+  PetscCallMPI(MPI_Allreduce(&vmax, &vmax_global, 1, MPI_DOUBLE, MPI_MAX, s->comm));
+  /* Monaghan's artificial viscosity widens the signal speed by 1.2 (alpha c0 + beta max|v|) */
+  const double signal = sp->c0 + vmax_global + 1.2 * (sp->av_alpha * sp->c0 + sp->av_beta * vmax_global);
+  PetscCall(dt_limits_add(l, "sph sound speed", "0.25 h_s/(c0 + max|v| [+ AV]), h_s = h/2", 0.25 * hs / signal));
+  if (sp->nu > 0)
+    PetscCall(dt_limits_add(l, "sph viscosity", "0.125 h_s^2/nu, h_s = h/2", 0.125 * hs * hs / sp->nu));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
+  const sph_params *sp = &s->sph;
+  PetscFunctionBeginUser;
+  (void)self;
+  PetscCall(PetscViewerASCIIPrintf(v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
+                                   sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
+  PetscCall(PetscViewerASCIIPrintf(v, "sph: eos %s, density %s, artificial viscosity alpha = %g beta = %g, walls: Adami extrapolation\n",
+                                   sph_eos_names[sp->eos], sph_density_names[sp->density], sp->av_alpha, sp->av_beta));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sph_destroy(module *self) {
+  sph_data *d = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(sph_wall_destroy(&d->wall));
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sph_module_create(module **m) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(m));
+  (*m)->name = "sph";
+  (*m)->needs = MODULE_NEEDS_PAIRS;
+  (*m)->set_from_options = sph_set_from_options;
+  (*m)->setup = sph_setup;
+  (*m)->compute = sph_compute;
+  (*m)->max_dt = sph_max_dt;
+  (*m)->view = sph_view;
+  (*m)->destroy = sph_destroy;
+  PetscCall(PetscNew((sph_data **)&(*m)->data));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,113 @@
+/* The SPH momentum sweep (pressure + Morris viscosity [+ Monaghan artificial
+ * viscosity]); with continuity density it also accumulates d rho/dt in the
+ * same pass over pairs, as LAMMPS' sph/taitwater does: one pair loop instead
+ * of two. Pair arithmetic: sph_force_iact.h. The run-time choices (kernel,
+ * continuity, artificial viscosity) select one of 12 specialised sweeps
+ * before the loop. */
+#include "dmhs/sim.h"
+#include "dmhs/events.h"
+#include "sph_force_iact.h"
+#include "sph_force.h"
+
+typedef struct {
+  PetscInt n_pairs;
+  const PetscInt *restrict pi, *restrict pj;
+  const double (*restrict x)[2], (*restrict v_est)[2], (*restrict v_visc)[2];
+  const double *restrict mass, *restrict rho, *restrict p;
+  double (*restrict a)[2];
+  double *restrict drho;
+  double h, norm, mu_sum, alpha, beta, c0;
+} force_args;
+
+SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artificial,
+                            const force_args *A) {
+  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
+  const double(*restrict x)[2] = A->x, (*restrict v_est)[2] = A->v_est,
+        (*restrict v_visc)[2] = A->v_visc;
+  const double *restrict mass = A->mass, *restrict rho = A->rho, *restrict p = A->p;
+  double(*restrict a)[2] = A->a;
+  double *restrict drho = A->drho;
+  const double h = A->h, norm = A->norm, mu_sum = A->mu_sum;
+  for (PetscInt k = 0; k < A->n_pairs; k++) {
+    const PetscInt i = pi[k], j = pj[k];
+    const double rij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
+    const double r = sqrt(rij[0] * rij[0] + rij[1] * rij[1]);
+    double w, dwdr;
+    sph_kernel_eval(kernel, 2, norm, h, r, &w, &dwdr);
+    const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
+    double T[2];
+    sph_force_iact(rij, r, dwdr, rho[i], rho[j], p[i], p[j], vvisc, mu_sum, T);
+    if (artificial || continuity) {
+      const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
+      if (artificial)
+        sph_force_iact_artificial_viscosity(rij, r, dwdr, rho[i], rho[j], vij, A->alpha,
+                                            A->beta, A->c0, h, T);
+      if (continuity) {
+        const double q = sph_continuity_iact(rij, r, dwdr, vij);
+        drho[i] += mass[j] * q;
+        drho[j] += mass[i] * q;
+      }
+    }
+    /* ghost rows receive contributions too; they are discarded (Newton's third
+     * law inside a rank only), which keeps the loop free of branches */
+    a[i][0] += mass[j] * T[0];
+    a[i][1] += mass[j] * T[1];
+    a[j][0] -= mass[i] * T[0];
+    a[j][1] -= mass[i] * T[1];
+  }
+}
+
+#define SWEEP(name, K, C, AV)                                                                     \
+  static void name(const force_args *A) { force_sweep(K, C, AV, A); }
+SWEEP(sweep_lucy, SPH_KERNEL_LUCY, 0, 0)
+SWEEP(sweep_lucy_c, SPH_KERNEL_LUCY, 1, 0)
+SWEEP(sweep_lucy_av, SPH_KERNEL_LUCY, 0, 1)
+SWEEP(sweep_lucy_c_av, SPH_KERNEL_LUCY, 1, 1)
+SWEEP(sweep_cubic, SPH_KERNEL_CUBIC, 0, 0)
+SWEEP(sweep_cubic_c, SPH_KERNEL_CUBIC, 1, 0)
+SWEEP(sweep_cubic_av, SPH_KERNEL_CUBIC, 0, 1)
+SWEEP(sweep_cubic_c_av, SPH_KERNEL_CUBIC, 1, 1)
+SWEEP(sweep_wendland, SPH_KERNEL_WENDLAND, 0, 0)
+SWEEP(sweep_wendland_c, SPH_KERNEL_WENDLAND, 1, 0)
+SWEEP(sweep_wendland_av, SPH_KERNEL_WENDLAND, 0, 1)
+SWEEP(sweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1)
+
+/* [kernel][continuity][artificial viscosity] */
+static void (*const sweeps[3][2][2])(const force_args *) = {
+    {{sweep_lucy, sweep_lucy_av}, {sweep_lucy_c, sweep_lucy_c_av}},
+    {{sweep_cubic, sweep_cubic_av}, {sweep_cubic_c, sweep_cubic_c_av}},
+    {{sweep_wendland, sweep_wendland_av}, {sweep_wendland_c, sweep_wendland_c_av}},
+};
+
+PetscErrorCode sph_force_compute(sim *s) {
+  particles *ps = &s->ps;
+  const sph_params *sp = &s->sph;
+  const int continuity = sp->density == SPH_DENSITY_CONTINUITY;
+  const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.sph_force, 0, 0, 0, 0));
+  const force_args A = {
+      .n_pairs = s->cel.n_pairs,
+      .pi = s->cel.pair_i,
+      .pj = s->cel.pair_j,
+      .x = (const double(*)[2])ps->x,
+      .v_est = (const double(*)[2])ps->v_est,
+      .v_visc = (const double(*)[2])ps->v_visc,
+      .mass = ps->mass,
+      .rho = ps->rho,
+      .p = ps->p,
+      .a = ps->a,
+      .drho = ps->drho,
+      .h = sp->h,
+      .norm = sph_kernel_norm(sp->kernel, 2, sp->h),
+      /* mu_i + mu_j with one liquid of dynamic viscosity rho0 nu */
+      .mu_sum = 2.0 * sp->rho0 * sp->nu,
+      .alpha = sp->av_alpha,
+      .beta = sp->av_beta,
+      .c0 = sp->c0,
+  };
+  sweeps[sp->kernel][continuity][artificial](&A);
+  PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs));
+  PetscCall(PetscLogEventEnd(events.sph_force, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,18 @@
+/* Internal interface between the sph module's files (not public). */
+#ifndef DMHS_SPH_INTERNAL_H
+#define DMHS_SPH_INTERNAL_H
+#include "dmhs/sim.h"
+
+/* sph_force.c: momentum (and continuity) sweep over the pair list */
+PetscErrorCode sph_force_compute(sim *s);
+/* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
+PetscErrorCode sph_density_summation(sim *s);
+/* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */
+PetscErrorCode sph_eos_compute(sim *s);
+/* sph_wall.c: wall velocity/pressure/density extrapolated from the liquid (Adami 2012) */
+typedef struct sph_wall_work sph_wall_work;
+PetscErrorCode sph_wall_create(sph_wall_work **w);
+PetscErrorCode sph_wall_destroy(sph_wall_work **w);
+PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *w);
+
+#endif

@@ -1,0 +1,51 @@
+/* Pair arithmetic of the SPH momentum and continuity equations, as plain
+ * scalar functions (unit-tested for antisymmetry).
+ *
+ * Momentum (Morris, Fox & Zhu 1997), for the pair term T with
+ *   a_i += m_j T,  a_j -= m_i T   (so m_i a_i + m_j a_j = 0 exactly):
+ *   T = -(p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij
+ *       + (mu_i + mu_j)/(rho_i rho_j) (v_i - v_j) (1/r) dW/dr
+ *       - Pi_ij grad_i W_ij                                   (optional)
+ * with grad_i W_ij = dW/dr r_ij / r, r_ij = x_i - x_j, and the Monaghan (1992)
+ * artificial viscosity, for v_ij . r_ij < 0 only:
+ *   mu_ij = h v_ij . r_ij / (r^2 + eps^2), eps = 0.1 h,
+ *   Pi_ij = (-alpha c0 mu_ij + beta mu_ij^2) / rho_bar,  rho_bar = (rho_i + rho_j)/2.
+ *
+ * Continuity: d rho_i/dt += m_j (v_i - v_j) . grad_i W_ij, and the same
+ * scalar q = (v_i - v_j) . grad_i W_ij times m_i for j. */
+#ifndef DMHS_SPH_FORCE_IACT_H
+#define DMHS_SPH_FORCE_IACT_H
+#include "sph_kernel.h"
+
+SPH_INLINE void sph_force_iact(const double rij[2], double r, double dwdr, double rho_i,
+                               double rho_j, double p_i, double p_j, const double vvisc_ij[2],
+                               double mu_sum, double T[2]) {
+  const double grad = dwdr / r; /* grad_i W = grad * r_ij */
+  const double press = -(p_i / (rho_i * rho_i) + p_j / (rho_j * rho_j));
+  const double visc = mu_sum / (rho_i * rho_j) * grad;
+  T[0] = press * grad * rij[0] + visc * vvisc_ij[0];
+  T[1] = press * grad * rij[1] + visc * vvisc_ij[1];
+}
+
+/* Adds the Monaghan term to T; vij is the (predicted) relative velocity. */
+SPH_INLINE void sph_force_iact_artificial_viscosity(const double rij[2], double r, double dwdr,
+                                                    double rho_i, double rho_j,
+                                                    const double vij[2], double alpha,
+                                                    double beta, double c0, double h,
+                                                    double T[2]) {
+  const double vr = vij[0] * rij[0] + vij[1] * rij[1];
+  if (vr >= 0.0) return;
+  const double mu = h * vr / (r * r + 0.01 * h * h);
+  const double Pi = (-alpha * c0 * mu + beta * mu * mu) / (0.5 * (rho_i + rho_j));
+  const double grad = dwdr / r;
+  T[0] -= Pi * grad * rij[0];
+  T[1] -= Pi * grad * rij[1];
+}
+
+/* The continuity pair scalar q = (v_i - v_j) . grad_i W_ij. */
+SPH_INLINE double sph_continuity_iact(const double rij[2], double r, double dwdr,
+                                      const double vij[2]) {
+  return dwdr / r * (vij[0] * rij[0] + vij[1] * rij[1]);
+}
+
+#endif

@@ -1,0 +1,75 @@
+/* SPH kernels with support radius h (W = 0 for r >= h, LAMMPS convention),
+ * normalised in 1, 2 and 3 dimensions. q = r / h.
+ *
+ *   Lucy (1977):         W = a_d (1 + 3q)(1 - q)^3,
+ *                        a_1 = 5/(4h), a_2 = 5/(pi h^2), a_3 = 105/(16 pi h^3)
+ *   Cubic B-spline (Monaghan & Lattanzio 1985) with smoothing length s = h/2,
+ *                        u = r/s = 2q: W = sigma_d / s^d * {1 - 1.5u^2 + 0.75u^3 (u < 1);
+ *                        0.25 (2 - u)^3 (1 <= u < 2)}, sigma = 2/3, 10/(7 pi), 1/pi
+ *   Wendland C2 (1995):  1D W = 5/(4h) (1 - q)^3 (1 + 3q);
+ *                        2D/3D W = b_d (1 - q)^4 (1 + 4q), b_2 = 7/(pi h^2), b_3 = 21/(2 pi h^3)
+ *
+ * Callers pass the kind and dimension as compile-time constants so that the
+ * switch folds away inside specialised sweeps. */
+#ifndef DMHS_SPH_KERNEL_H
+#define DMHS_SPH_KERNEL_H
+#include <math.h>
+#include "dmhs/sph.h"
+
+#define SPH_INLINE static inline __attribute__((always_inline))
+
+SPH_INLINE double sph_kernel_norm(sph_kernel_kind kind, int dim, double h) {
+  const double pi = M_PI;
+  switch (kind) {
+  case SPH_KERNEL_LUCY:
+    return dim == 1 ? 5.0 / (4.0 * h) : dim == 2 ? 5.0 / (pi * h * h) : 105.0 / (16.0 * pi * h * h * h);
+  case SPH_KERNEL_CUBIC: {
+    const double s = 0.5 * h;
+    return dim == 1 ? 2.0 / (3.0 * s) : dim == 2 ? 10.0 / (7.0 * pi * s * s) : 1.0 / (pi * s * s * s);
+  }
+  case SPH_KERNEL_WENDLAND:
+    return dim == 1 ? 5.0 / (4.0 * h) : dim == 2 ? 7.0 / (pi * h * h) : 21.0 / (2.0 * pi * h * h * h);
+  }
+  return 0.0;
+}
+
+/* W(r) and dW/dr for r < h (callers only pass pairs inside the support; r >= h gives 0). */
+SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, double h, double r,
+                                double *w, double *dwdr) {
+  const double q = r / h;
+  if (q >= 1.0) {
+    *w = 0.0;
+    *dwdr = 0.0;
+    return;
+  }
+  const double m = 1.0 - q;
+  switch (kind) {
+  case SPH_KERNEL_LUCY:
+    *w = norm * (1.0 + 3.0 * q) * m * m * m;
+    *dwdr = -12.0 * norm * q * m * m / h;
+    return;
+  case SPH_KERNEL_CUBIC: {
+    const double u = 2.0 * q; /* r / s with s = h/2; d/dr = (2/h) d/du */
+    if (u < 1.0) {
+      *w = norm * (1.0 - 1.5 * u * u + 0.75 * u * u * u);
+      *dwdr = norm * (-3.0 * u + 2.25 * u * u) * 2.0 / h;
+    } else {
+      const double v = 2.0 - u;
+      *w = norm * 0.25 * v * v * v;
+      *dwdr = -norm * 0.75 * v * v * 2.0 / h;
+    }
+    return;
+  }
+  case SPH_KERNEL_WENDLAND:
+    if (dim == 1) {
+      *w = norm * (1.0 + 3.0 * q) * m * m * m;
+      *dwdr = -12.0 * norm * q * m * m / h;
+    } else {
+      *w = norm * (1.0 + 4.0 * q) * m * m * m * m;
+      *dwdr = -20.0 * norm * q * m * m * m / h;
+    }
+    return;
+  }
+}
+
+#endif

@@ -1,0 +1,155 @@
+/* Plane channel (SPEC 4.1): nx x ny liquid particles on a square lattice of
+ * spacing dx = l/ny between wall layers, periodic in x. The lower wall is at
+ * rest; the upper one moves at -wall_speed (Couette). Poiseuille flow is driven
+ * by the body force module. The liquid's v_x is compared with the series
+ * solution as the run goes (diag/errors.c). */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/channel.h"
+#include "dmhs/analytic.h"
+#include "dmhs/errors.h"
+#include "dmhs/body_force.h"
+
+typedef struct {
+  channel_flow flow;
+  double width, length; /* l (wall to wall) and the x period [m] */
+  PetscInt nx, ny;
+  PetscInt wall_layers;  /* 0 = enough to fill the kernel support */
+  double wall_speed;     /* upper plate (Couette) [m/s] */
+  double drive;          /* F (Poiseuille) [m/s^2], read back from the body force module */
+  double nu;             /* for the exact solution */
+  module *body;
+  errors err;
+} channel_data;
+
+static double exact_poiseuille(double y, double t, const void *ctx) {
+  const channel_data *c = ctx;
+  return analytic_poiseuille(y, t, c->drive, c->nu, c->width);
+}
+
+static double exact_couette(double y, double t, const void *ctx) {
+  const channel_data *c = ctx;
+  return analytic_couette(y, t, c->wall_speed, c->nu, c->width);
+}
+
+static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, c->flow == CHANNEL_POISEUILLE ? "Scene poiseuille" : "Scene couette", NULL);
+  PetscCall(PetscOptionsReal("-channel_width", "Distance l between the walls [m]", NULL, c->width, &c->width, NULL));
+  PetscCall(PetscOptionsReal("-channel_length", "Periodic length along x [m]", NULL, c->length, &c->length, NULL));
+  PetscCall(PetscOptionsInt("-channel_nx", "Liquid particles along x [1]", NULL, c->nx, &c->nx, NULL));
+  PetscCall(PetscOptionsInt("-channel_ny", "Liquid particles across the channel [1]", NULL, c->ny, &c->ny, NULL));
+  PetscCall(PetscOptionsInt("-channel_wall_layers", "Wall particle layers per wall [1] (0 = fill the support)",
+                            NULL, c->wall_layers, &c->wall_layers, NULL));
+  if (c->flow == CHANNEL_COUETTE)
+    PetscCall(PetscOptionsReal("-wall_speed", "Upper plate speed along x [m/s]", NULL, c->wall_speed,
+                               &c->wall_speed, NULL));
+  PetscOptionsEnd();
+  PetscCheck(c->width > 0 && c->length > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_width and -channel_length must be > 0 (got %g, %g)", c->width, c->length);
+  PetscCheck(c->nx > 0 && c->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_nx and -channel_ny must be > 0 (got %" PetscInt_FMT ", %" PetscInt_FMT ")", c->nx, c->ny);
+  PetscCheck(c->wall_layers >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-channel_wall_layers must be >= 0");
+  s->dx = c->width / (double)c->ny;
+  const double dx_along = c->length / (double)c->nx;
+  PetscCheck(fabs(dx_along - s->dx) <= 1e-9 * s->dx, s->comm, PETSC_ERR_ARG_INCOMP,
+             "the lattice must be square: -channel_length/-channel_nx = %g m but -channel_width/-channel_ny = %g m",
+             dx_along, s->dx);
+
+  /* the published channel setup; every value can be overridden with -sph_* */
+  s->sph.kernel = SPH_KERNEL_LUCY;
+  s->sph.h = 3.0 * s->dx;
+  s->sph.rho0 = 1000.0;
+  s->sph.c0 = 0.01;
+  s->sph.nu = 1e-6;
+  s->sph.eos = SPH_EOS_TAIT;
+  s->sph.density = SPH_DENSITY_CONTINUITY;
+  PetscCall(sim_enable_module(s, "sph", NULL));
+  if (c->flow == CHANNEL_POISEUILLE) {
+    PetscCall(sim_enable_module(s, "body_force", &c->body));
+    PetscCall(body_force_set_default(c->body, 2e-4, 0.0));
+  }
+  PetscCall(errors_set_from_options(&c->err, s));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode channel_build(scene *self, sim *s) {
+  channel_data *c = self->data;
+  const double dx = s->dx, m = s->sph.rho0 * dx * dx;
+  const double zero[DMHS_DIM] = {0, 0}, plate[DMHS_DIM] = {c->wall_speed, 0};
+  PetscInt64 gid = 0;
+  PetscFunctionBeginUser;
+  const PetscInt layers = c->wall_layers > 0 ? c->wall_layers : (PetscInt)ceil(s->sph.h / dx - 1e-9);
+  s->dom.lo[0] = 0;
+  s->dom.hi[0] = c->length;
+  s->dom.periodic[0] = PETSC_TRUE;
+  s->dom.lo[1] = -layers * dx;
+  s->dom.hi[1] = c->width + layers * dx;
+  s->dom.periodic[1] = PETSC_FALSE;
+  PetscCall(particles_reserve(&s->ps, c->nx * (c->ny + 2 * layers)));
+  for (PetscInt j = 0; j < c->ny; j++)
+    for (PetscInt i = 0; i < c->nx; i++) {
+      const double x[DMHS_DIM] = {(i + 0.5) * dx, (j + 0.5) * dx};
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, s->sph.rho0, NULL));
+    }
+  for (PetscInt k = 0; k < layers; k++)
+    for (PetscInt i = 0; i < c->nx; i++) {
+      const double below[DMHS_DIM] = {(i + 0.5) * dx, -(k + 0.5) * dx};
+      const double above[DMHS_DIM] = {(i + 0.5) * dx, c->width + (k + 0.5) * dx};
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, plate, m, s->sph.rho0, NULL));
+    }
+  c->nu = s->sph.nu;
+  if (c->flow == CHANNEL_POISEUILLE) {
+    c->drive = s->body_accel[0];
+    PetscCheck(c->nu > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "poiseuille: -sph_nu must be > 0 for a steady flow");
+    PetscCall(errors_setup(&c->err, s, exact_poiseuille, c, c->drive * c->width * c->width / (8.0 * c->nu)));
+  } else {
+    PetscCall(errors_setup(&c->err, s, exact_couette, c, fabs(c->wall_speed)));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode channel_diagnose(scene *self, sim *s) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(errors_on_step(&c->err, s));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode channel_finish(scene *self, sim *s) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(errors_report(&c->err, s));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode channel_destroy(scene *self) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(errors_destroy(&c->err));
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode channel_scene_create(channel_flow flow, scene **out) {
+  channel_data *c;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(out));
+  PetscCall(PetscNew(&c));
+  c->flow = flow;
+  c->width = 1e-3;
+  c->length = 5e-4;
+  c->nx = 40;
+  c->ny = 80;
+  c->wall_speed = flow == CHANNEL_COUETTE ? 2.5e-5 : 0.0;
+  (*out)->name = flow == CHANNEL_POISEUILLE ? "poiseuille" : "couette";
+  (*out)->set_from_options = channel_set_from_options;
+  (*out)->build = channel_build;
+  (*out)->diagnose = channel_diagnose;
+  (*out)->finish = channel_finish;
+  (*out)->destroy = channel_destroy;
+  (*out)->data = c;
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,6 @@
+/* Scene poiseuille: channel flow driven by a body force F along x from rest
+ * (SPEC 4.1), validated against the series solution. Geometry: channel.c. */
+#include "dmhs/channel.h"
+#include "dmhs/scenes.h"
+
+PetscErrorCode poiseuille_scene_create(scene **out) { return channel_scene_create(CHANNEL_POISEUILLE, out); }
