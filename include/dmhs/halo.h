@@ -1,25 +1,50 @@
-/* Ghost particles: periodic images (and, across ranks, copies of neighbours'
- * particles). Built after migration; forward updates refresh ghost fields. */
+/* Ghost particles: periodic images and copies of other ranks' particles,
+ * rebuilt after every migration; forward updates refresh ghost fields from
+ * their owners in the order of the build. No reverse exchange: owners compute
+ * their own pairs with ghosts redundantly (doc/parallel.md). */
 #ifndef DMHS_HALO_H
 #define DMHS_HALO_H
 #include <petscsys.h>
 #include "dmhs/particles.h"
 #include "dmhs/domain.h"
+#include "dmhs/partition.h"
 
 typedef struct halo {
-  double width;  /* every interaction reach (SPH support, ...) plus skin */
+  double width; /* every interaction reach (SPH support, ...) plus skin */
+  MPI_Comm comm;
+  PetscMPIInt rank, size;
+  /* One rank: one entry per ghost (its owned source row and periodic shift).
+   * Several ranks: one entry per copy sent, grouped by destination rank
+   * (entries [send_off[r], send_off[r + 1]) go to rank r, itself included for
+   * periodic images); the shift is added to x before sending. */
   PetscInt n, n_alloc;
-  PetscInt *source;         /* owned row each ghost copies */
-  double (*shift)[DMHS_DIM]; /* periodic shift added to the copied position */
+  PetscInt *source;
+  double (*shift)[DMHS_DIM];
+  PetscMPIInt *dest;                  /* build scratch: destination of each entry */
+  PetscInt *send_off, *recv_off;      /* size + 1 offsets, in particles */
+  PetscMPIInt *send_cnt, *send_displ; /* in bytes, for MPI_Alltoallv */
+  PetscMPIInt *recv_cnt, *recv_displ;
+  char *send_buf, *recv_buf;
+  size_t send_buf_len, recv_buf_len;
+  PetscInt n_recv; /* ghosts received (= n_ghost) */
 } halo;
 
-PetscErrorCode halo_create(halo *h, double width);
+PetscErrorCode halo_create(halo *h, double width, MPI_Comm comm);
 PetscErrorCode halo_destroy(halo *h);
-/* Drop old ghosts and create new ones for every owned particle within `width` of a
- * periodic boundary; copies all FIELD_GHOST fields. */
-PetscErrorCode halo_build(halo *h, const domain *d, particles *ps);
-/* Copy the named fields (by FIELD_* flag set, or a field list) from sources to ghosts. */
-PetscErrorCode halo_forward(const halo *h, particles *ps, const char *const field_names[],
-                            int n_fields);
+/* Drops old ghosts and creates new ones, with every FIELD_GHOST field:
+ * one rank: periodic images of owned particles within `width` of a periodic boundary;
+ * several ranks: a copy of each owned particle for every rank (itself included,
+ * with a periodic shift) owning a cell of `part` within `width` of it.
+ * Collective on several ranks. */
+PetscErrorCode halo_build(halo *h, const domain *d, const partition *part, particles *ps);
+/* Refreshes the named FIELD_GHOST fields of the ghosts from their owners
+ * (x gets its periodic shift again). Collective on several ranks. */
+PetscErrorCode halo_forward(halo *h, particles *ps, const char *const field_names[], int n_fields);
+
+/* -debug_halo (halo_check.c): the pair list of every owned particle equals a
+ * brute-force search over all ranks' particles. Collective. */
+struct sim;
+PetscErrorCode halo_check_set_from_options(struct sim *s);
+PetscErrorCode halo_check_pairs(struct sim *s);
 
 #endif

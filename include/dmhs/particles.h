@@ -47,4 +47,18 @@ void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flag
 /* Number of owned particles of a type on this rank. */
 PetscInt particles_count_type(const particles *ps, particle_type type);
 
+/* mpi: packing rows of selected fields (from the field table) into a byte buffer,
+ * particle after particle, for migration and ghosts. */
+#include "dmhs/fields.h"
+/* Fields whose flags intersect `flags`, in table order; returns how many (<= max). */
+int particles_select_fields(unsigned flags, const field_desc **out, int max);
+/* Bytes of one packed particle. */
+size_t particles_packed_bytes(const field_desc *const *f, int nf);
+/* Packs rows[0..n) of the fields f; with shift, shift[e] is added to field x of entry e. */
+void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows, PetscInt n,
+                    const double (*shift)[DMHS_DIM], char *buf);
+/* Unpacks n particles into rows [first, first + n) (capacity must suffice). */
+void particles_unpack(particles *ps, const field_desc *const *f, int nf, PetscInt first, PetscInt n,
+                      const char *buf);
+
 #endif

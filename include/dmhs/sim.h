@@ -10,6 +10,8 @@
 #include "dmhs/module.h"
 #include "dmhs/scene.h"
 #include "dmhs/sph.h"
+#include "dmhs/partition.h" /* mpi */
+#include "dmhs/migrate.h"   /* mpi */
 
 #define SIM_MAX_MODULES 16
 
@@ -36,6 +38,11 @@ typedef struct sim {
   halo hal;
   cells cel;
   double pair_cutoff; /* largest pair reach among modules that need pairs */
+  /* mpi: domain decomposition, migration check, debug and dump options */
+  partition part;
+  migrate_check mig;
+  PetscBool debug_halo;                      /* -debug_halo: pair list vs brute force, every rebuild */
+  char dump_final[PETSC_MAX_PATH_LEN];       /* -dump_final <file> */
 
   /* physics */
   sph_params sph;

@@ -23,5 +23,7 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("Diagnostics", id, &events.diagnostics));
   PetscCall(PetscLogEventRegister("Output", id, &events.output));
   PetscCall(PetscLogEventRegister("CheckState", id, &events.check_state));
+  PetscCall(PetscLogEventRegister("Partition", id, &events.partition));
+  PetscCall(PetscLogEventRegister("HaloExchange", id, &events.halo_exchange));
   PetscFunctionReturn(0);
 }

@@ -82,3 +82,48 @@ PetscInt particles_count_type(const particles *ps, particle_type type) {
   for (PetscInt i = 0; i < ps->n_owned; i++) n += ps->type[i] == (PetscInt)type;
   return n;
 }
+
+/* mpi: field-table packing for migration and ghosts (particle-major rows). */
+int particles_select_fields(unsigned flags, const field_desc **out, int max) {
+  size_t nf;
+  const field_desc *t = fields_table(&nf);
+  int n = 0;
+  for (size_t k = 0; k < nf && n < max; k++)
+    if (t[k].flags & flags) out[n++] = &t[k];
+  return n;
+}
+
+size_t particles_packed_bytes(const field_desc *const *f, int nf) {
+  size_t b = 0;
+  for (int k = 0; k < nf; k++) b += fields_row_bytes(f[k]);
+  return b;
+}
+
+void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows, PetscInt n,
+                    const double (*shift)[DMHS_DIM], char *buf) {
+  for (PetscInt e = 0; e < n; e++) {
+    const PetscInt r = rows[e];
+    for (int k = 0; k < nf; k++) {
+      const size_t row = fields_row_bytes(f[k]);
+      const char *base = *fields_member((void *)ps, f[k]);
+      if (shift && f[k]->offset == offsetof(particles, x)) {
+        double x[DMHS_DIM];
+        memcpy(x, base + row * (size_t)r, row);
+        for (int d = 0; d < DMHS_DIM; d++) x[d] += shift[e][d];
+        memcpy(buf, x, row);
+      } else memcpy(buf, base + row * (size_t)r, row);
+      buf += row;
+    }
+  }
+}
+
+void particles_unpack(particles *ps, const field_desc *const *f, int nf, PetscInt first, PetscInt n,
+                      const char *buf) {
+  for (PetscInt e = 0; e < n; e++)
+    for (int k = 0; k < nf; k++) {
+      const size_t row = fields_row_bytes(f[k]);
+      char *base = *fields_member(ps, f[k]);
+      memcpy(base + row * (size_t)(first + e), buf, row);
+      buf += row;
+    }
+}

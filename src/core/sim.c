@@ -15,6 +15,7 @@
 #include "dmhs/integrate.h"
 #include "dmhs/migrate.h"
 #include "dmhs/progress.h"
+#include "dmhs/dump.h" /* mpi */
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_", NULL};
 
@@ -116,7 +117,7 @@ PetscErrorCode sim_enable_module(sim *s, const char *name, module **out) {
 PetscErrorCode sim_rebuild_neighbours(sim *s) {
   double lo[DMHS_DIM], hi[DMHS_DIM];
   PetscFunctionBeginUser;
-  PetscCall(halo_build(&s->hal, &s->dom, &s->ps));
+  PetscCall(halo_build(&s->hal, &s->dom, &s->part, &s->ps)); /* mpi: + partition */
   if (s->pair_cutoff > 0) {
     PetscCall(PetscLogEventBegin(events.pairs, 0, 0, 0, 0));
     for (int k = 0; k < DMHS_DIM; k++) {
@@ -125,6 +126,7 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
     }
     PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, s->pair_cutoff));
     PetscCall(PetscLogEventEnd(events.pairs, 0, 0, 0, 0));
+    if (s->debug_halo) PetscCall(halo_check_pairs(s)); /* mpi */
   }
   PetscFunctionReturn(0);
 }
@@ -180,6 +182,11 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
 
   PetscCall(PetscLogStagePush(events.stage_setup));
   PetscCall(sim_set_from_options(s, scene_name, sizeof(scene_name)));
+  /* mpi: decomposition, migration check, halo check and final dump */
+  PetscCall(partition_set_from_options(&s->part, s));
+  PetscCall(migrate_set_from_options(&s->mig, s));
+  PetscCall(halo_check_set_from_options(s));
+  PetscCall(dump_set_from_options(s));
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   *help_only = help;
   if (help) {
@@ -187,9 +194,6 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
   }
-  PetscCheck(s->size == 1, comm, PETSC_ERR_SUP,
-             "dmhs runs on one MPI rank for now (got %d): domain decomposition is not implemented yet",
-             (int)s->size);
 
   /* scene options (they set module defaults and enable modules), then modules' own */
   PetscCall(registry_create_scene(scene_name, &s->scn));
@@ -205,7 +209,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
     if (s->modules[m]->needs & MODULE_NEEDS_PAIRS) s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
   }
   PetscCall(domain_check_ghost_width(&s->dom, reach));
-  PetscCall(halo_create(&s->hal, reach));
+  PetscCall(halo_create(&s->hal, reach, s->comm));
+  PetscCall(partition_setup(&s->part, s)); /* mpi: each rank keeps its share of the scene */
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->setup) PetscCall(s->modules[m]->setup(s->modules[m], s));
 
@@ -256,6 +261,7 @@ PetscErrorCode sim_run(sim *s) {
   PetscCall(PetscLogStagePop());
   if (s->scn->finish) PetscCall(s->scn->finish(s->scn, s));
   PetscCall(progress_summary(s));
+  PetscCall(dump_final(s)); /* mpi */
   PetscFunctionReturn(0);
 }
 
@@ -272,6 +278,7 @@ PetscErrorCode sim_destroy(sim **sp) {
     PetscCall(PetscFree(s->scn));
   }
   PetscCall(halo_destroy(&s->hal));
+  PetscCall(partition_destroy(&s->part)); /* mpi */
   PetscCall(cells_destroy(&s->cel));
   PetscCall(particles_destroy(&s->ps));
   PetscCall(registry_finalize());

@@ -65,23 +65,42 @@ PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
 }
 
 /* profile_t<t>.csv: one row per fluid particle, written to a temporary name
- * and renamed so that a reader never sees half a file. Rank 0 writes; with
- * several ranks the rows are gathered first. */
+ * and renamed so that a reader never sees half a file. Rank 0 writes the rows
+ * of every rank, gathered with MPI_Gatherv (rank order, then owned order). */
 static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
   char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  double *mine, *all = NULL;
+  PetscMPIInt n_mine = 0, *counts = NULL, *displs = NULL;
   PetscFunctionBeginUser;
-  PetscCheck(s->size == 1, s->comm, PETSC_ERR_SUP, "profiles on several ranks are not implemented");
+  PetscCall(PetscMalloc1(3 * particles_count_type(ps, PTYPE_FLUID) + 1, &mine));
+  for (PetscInt i = 0; i < ps->n_owned; i++)
+    if (ps->type[i] == PTYPE_FLUID) {
+      mine[n_mine++] = ps->x[i][1];
+      mine[n_mine++] = ps->v[i][0];
+      mine[n_mine++] = e->exact(ps->x[i][1], s->t, e->ctx);
+    }
+  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
+  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
+  if (s->rank == 0) {
+    displs[0] = 0;
+    for (PetscMPIInt r = 0; r < s->size; r++) displs[r + 1] = displs[r] + counts[r];
+    PetscCall(PetscMalloc1(displs[s->size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  PetscCall(PetscFree(mine));
+  if (s->rank != 0) PetscFunctionReturn(0);
   PetscCall(PetscSNPrintf(name, sizeof(name), "profile_t%g.csv", t_report));
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
   int ok = fprintf(f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
-  for (PetscInt i = 0; i < ps->n_owned && ok; i++)
-    if (ps->type[i] == PTYPE_FLUID)
-      ok = fprintf(f, "%.9e,%.9e,%.9e\n", ps->x[i][1], ps->v[i][0], e->exact(ps->x[i][1], s->t, e->ctx)) > 0;
+  for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 3)
+    ok = fprintf(f, "%.9e,%.9e,%.9e\n", all[k], all[k + 1], all[k + 2]) > 0;
   ok = (fclose(f) == 0) && ok;
+  PetscCall(PetscFree(all));
+  PetscCall(PetscFree2(counts, displs));
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
   PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
              path, strerror(errno));

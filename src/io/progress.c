@@ -17,13 +17,14 @@ PetscErrorCode progress_print(sim *s) {
       local[1] = PetscMax(local[1], PetscAbsReal(ps->rho[i] / s->sph.rho0 - 1.0));
   }
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
+  PetscCall(partition_measure_imbalance(&s->part, s)); /* mpi: max/mean owned over ranks */
   const double elapsed = MPI_Wtime() - s->loop_start_wtime;
   const double rate = particle_steps_per_second(s, elapsed);
   const double eta = s->t > 0 ? elapsed * (s->t_end - s->t) / s->t : 0.0;
   PetscCall(PetscPrintf(s->comm,
                         "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
-                        "max|v| %.3e m/s  max|rho/rho0-1| %.2e\n",
-                        s->step, s->t, s->dt, rate, eta, sqrt(global[0]), global[1]));
+                        "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",
+                        s->step, s->t, s->dt, rate, eta, sqrt(global[0]), global[1], s->part.imbalance));
   PetscFunctionReturn(0);
 }
 

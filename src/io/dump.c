@@ -1,0 +1,79 @@
+/* Final-state dump for rank-count comparisons (see dump.h). Every rank sends
+ * its owned (gid, type, x, y, vx, vy, rho) rows to rank 0 with MPI_Gatherv;
+ * rank 0 sorts them by gid and writes a CSV through a temporary name. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/dump.h"
+
+#define DUMP_COLS 7 /* gid, type, x, y, vx, vy, rho: all stored as doubles (gids < 2^53) */
+
+PetscErrorCode dump_set_from_options(sim *s) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Final-state dump", NULL);
+  PetscCall(PetscOptionsString("-dump_final", "Write gid-sorted final particle states to this CSV file", NULL,
+                               s->dump_final, s->dump_final, sizeof(s->dump_final), NULL));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+static int dump_compare(const void *a, const void *b) {
+  const double ga = ((const double *)a)[0], gb = ((const double *)b)[0];
+  return (ga > gb) - (ga < gb);
+}
+
+PetscErrorCode dump_final(sim *s) {
+  const particles *ps = &s->ps;
+  double *mine, *all = NULL;
+  PetscMPIInt n_mine, *counts = NULL, *displs = NULL;
+  PetscFunctionBeginUser;
+  if (!s->dump_final[0]) PetscFunctionReturn(0);
+  PetscCheck((size_t)ps->n_owned * DUMP_COLS < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "-dump_final: too many particles");
+  n_mine = (PetscMPIInt)(ps->n_owned * DUMP_COLS);
+  PetscCall(PetscMalloc1(n_mine + 1, &mine));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    double *row = mine + DUMP_COLS * i;
+    row[0] = (double)ps->gid[i];
+    row[1] = (double)ps->type[i];
+    row[2] = ps->x[i][0];
+    row[3] = ps->x[i][1];
+    row[4] = ps->v[i][0];
+    row[5] = ps->v[i][1];
+    row[6] = ps->rho[i];
+  }
+  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
+  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
+  size_t total = 0;
+  if (s->rank == 0) {
+    displs[0] = 0;
+    for (PetscMPIInt r = 0; r < s->size; r++) {
+      total += (size_t)counts[r];
+      PetscCheck(total < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "-dump_final: too many particles");
+      displs[r + 1] = (PetscMPIInt)total;
+    }
+    PetscCall(PetscMalloc1(total + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  if (s->rank == 0) {
+    char tmp[PETSC_MAX_PATH_LEN + 8];
+    const size_t n = total / DUMP_COLS;
+    qsort(all, n, DUMP_COLS * sizeof(double), dump_compare);
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", s->dump_final));
+    FILE *f = fopen(tmp, "w");
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-dump_final: cannot write %s: %s", tmp, strerror(errno));
+    int ok = fprintf(f, "gid,type,x,y,vx,vy,rho\n") > 0;
+    for (size_t k = 0; k < n && ok; k++) {
+      const double *r = all + DUMP_COLS * k;
+      ok = fprintf(f, "%.0f,%.0f,%.17e,%.17e,%.17e,%.17e,%.17e\n", r[0], r[1], r[2], r[3], r[4], r[5], r[6]) > 0;
+    }
+    ok = (fclose(f) == 0) && ok;
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-dump_final: writing %s failed (disk full?)", tmp);
+    PetscCheck(rename(tmp, s->dump_final) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "-dump_final: cannot rename %s to %s: %s", tmp, s->dump_final, strerror(errno));
+    PetscCall(PetscFree(all));
+    PetscCall(PetscFree2(counts, displs));
+  }
+  PetscCall(PetscFree(mine));
+  PetscFunctionReturn(0);
+}
