@@ -12,6 +12,7 @@ struct sim;
 typedef struct migrate_check {
   PetscBool enabled, have_reference;
   uint64_t reference[3]; /* count, sum of gids, sum of hash(gid), modulo 2^64 */
+  PetscInt64 moved;      /* particles sent to another rank by this rank, whole run */
 } migrate_check;
 
 /* Reads -debug_migration. */
@@ -22,5 +23,8 @@ PetscErrorCode migrate_particles(struct sim *s);
 /* With -debug_migration: the first call takes the reference, later ones compare
  * (error naming the step). Collective. */
 PetscErrorCode migrate_check_ids(migrate_check *m, struct sim *s);
+
+/* With -debug_migration: prints how many particles changed rank during the run. */
+PetscErrorCode migrate_report(migrate_check *m, struct sim *s);
 
 #endif

@@ -69,6 +69,18 @@ PetscErrorCode migrate_check_ids(migrate_check *m, sim *s) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode migrate_report(migrate_check *m, sim *s) {
+  PetscInt64 moved;
+  PetscFunctionBeginUser;
+  if (!m->enabled) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Allreduce(&m->moved, &moved, 1, MPIU_INT64, MPI_SUM, s->comm));
+  PetscCall(PetscPrintf(s->comm,
+                        "-debug_migration: %" PetscInt64_FMT " particles, count and ids unchanged at every step; %" PetscInt64_FMT
+                        " moves between ranks, %" PetscInt_FMT " repartition(s)\n",
+                        (PetscInt64)m->reference[0], moved, s->part.n_repartitions));
+  PetscFunctionReturn(0);
+}
+
 /* Several ranks: move owned particles to the owners of their cells. */
 static PetscErrorCode migrate_exchange(sim *s) {
   particles *ps = &s->ps;
@@ -92,6 +104,7 @@ static PetscErrorCode migrate_exchange(sim *s) {
       n_leave++;
     }
   }
+  s->mig.moved += n_leave;
   PetscCallMPI(MPI_Alltoall(cnt_out, 1, MPI_INT, cnt_in, 1, MPI_INT, s->comm));
   /* leaving rows grouped by destination, in owned order */
   PetscCall(PetscMalloc1(n_leave, &leaving));

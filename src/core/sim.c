@@ -262,6 +262,7 @@ PetscErrorCode sim_run(sim *s) {
   if (s->scn->finish) PetscCall(s->scn->finish(s->scn, s));
   PetscCall(progress_summary(s));
   PetscCall(dump_final(s)); /* mpi */
+  PetscCall(migrate_report(&s->mig, s)); /* mpi */
   PetscFunctionReturn(0);
 }
 

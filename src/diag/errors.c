@@ -1,6 +1,7 @@
 /* Error of v_x against an exact solution, as the run goes (see errors.h). */
 #include <math.h>
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/errors.h"
@@ -66,16 +67,23 @@ PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
 
 /* profile_t<t>.csv: one row per fluid particle, written to a temporary name
  * and renamed so that a reader never sees half a file. Rank 0 writes the rows
- * of every rank, gathered with MPI_Gatherv (rank order, then owned order). */
+ * of every rank, gathered with MPI_Gatherv and sorted by global id, so that the
+ * file does not depend on the rank count. */
+static int errors_compare_gid(const void *a, const void *b) {
+  const double ga = ((const double *)a)[0], gb = ((const double *)b)[0];
+  return (ga > gb) - (ga < gb);
+}
+
 static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
   char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   double *mine, *all = NULL;
   PetscMPIInt n_mine = 0, *counts = NULL, *displs = NULL;
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(3 * particles_count_type(ps, PTYPE_FLUID) + 1, &mine));
+  PetscCall(PetscMalloc1(4 * particles_count_type(ps, PTYPE_FLUID) + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] == PTYPE_FLUID) {
+      mine[n_mine++] = (double)ps->gid[i];
       mine[n_mine++] = ps->x[i][1];
       mine[n_mine++] = ps->v[i][0];
       mine[n_mine++] = e->exact(ps->x[i][1], s->t, e->ctx);
@@ -90,14 +98,15 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
   PetscCall(PetscFree(mine));
   if (s->rank != 0) PetscFunctionReturn(0);
+  qsort(all, (size_t)displs[s->size] / 4, 4 * sizeof(double), errors_compare_gid);
   PetscCall(PetscSNPrintf(name, sizeof(name), "profile_t%g.csv", t_report));
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
   int ok = fprintf(f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
-  for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 3)
-    ok = fprintf(f, "%.9e,%.9e,%.9e\n", all[k], all[k + 1], all[k + 2]) > 0;
+  for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 4)
+    ok = fprintf(f, "%.9e,%.9e,%.9e\n", all[k + 1], all[k + 2], all[k + 3]) > 0;
   ok = (fclose(f) == 0) && ok;
   PetscCall(PetscFree(all));
   PetscCall(PetscFree2(counts, displs));
