@@ -72,7 +72,7 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   PetscFunctionBeginUser;
   PetscCheck(s->size == 1, s->comm, PETSC_ERR_SUP, "profiles on several ranks are not implemented");
-  PetscCall(PetscSNPrintf(name, sizeof(name), "profile_t%g.csv", t_report));
+  snprintf(name, sizeof(name), "profile_t%g.csv", t_report); /* C formatting: PETSc would write "1." */
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
