@@ -47,7 +47,12 @@ def main():
     out = args.out or args.output_dir
     os.makedirs(out, exist_ok=True)
 
-    profiles = sorted(glob.glob(os.path.join(args.output_dir, "profile_t*.csv")))
+    with open(os.path.join(args.output_dir, "error.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    t_last = max(float(r["t"]) for r in rows) if rows else 0.0
+    # a profile later than the run's last row is left over from an earlier run
+    profiles = sorted(p for p in glob.glob(os.path.join(args.output_dir, "profile_t*.csv"))
+                      if read_profile(p)[0] <= t_last * (1 + 1e-9))
     if not profiles:
         sys.exit(f"plot_channel: no profile_t*.csv in {args.output_dir}")
     fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -64,8 +69,6 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(out, "profiles.png"), dpi=120)
 
-    with open(os.path.join(args.output_dir, "error.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
     t = np.array([float(r["t"]) for r in rows])
     l2 = np.array([float(r["l2"]) for r in rows])
     linf = np.array([float(r["linf"]) for r in rows])

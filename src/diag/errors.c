@@ -27,6 +27,15 @@ PetscErrorCode errors_set_from_options(errors *e, sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* <output_dir>/profile_t<t>.csv; C formatting of t (PETSc's would write "1.") */
+static PetscErrorCode errors_profile_path(const sim *s, double t, char *path, size_t len) {
+  char name[64];
+  PetscFunctionBeginUser;
+  snprintf(name, sizeof(name), "profile_t%g.csv", t);
+  PetscCall(sim_output_path(s, name, path, len));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx, double v_ref) {
   char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
@@ -42,6 +51,11 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
     PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
     PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "cannot write %s", path);
+    /* profiles of an earlier run in this directory would pass for this run's */
+    for (PetscInt k = 0; k < e->n_reports; k++) {
+      PetscCall(errors_profile_path(s, e->report_t[k], path, sizeof(path)));
+      (void)remove(path); /* absent is fine */
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -69,11 +83,10 @@ PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
  * several ranks the rows are gathered first. */
 static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
-  char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   PetscFunctionBeginUser;
   PetscCheck(s->size == 1, s->comm, PETSC_ERR_SUP, "profiles on several ranks are not implemented");
-  snprintf(name, sizeof(name), "profile_t%g.csv", t_report); /* C formatting: PETSc would write "1." */
-  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(errors_profile_path(s, t_report, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
