@@ -16,7 +16,10 @@ void domain_wrap(const domain *d, double x[DMHS_DIM]) {
     double L = domain_length(d, k);
     /* floor handles particles more than one period away (never expected, but exact) */
     x[k] -= L * floor((x[k] - d->lo[k]) / L);
-    if (x[k] >= d->hi[k]) x[k] = d->lo[k]; /* round-off at the upper edge */
+    /* round-off: (x - lo)/L may round up to a whole number just below hi, leaving x
+     * a few ulps below lo; and x + L may round to hi */
+    if (x[k] < d->lo[k]) x[k] += L;
+    if (x[k] >= d->hi[k]) x[k] = d->lo[k];
   }
 }
 

@@ -28,6 +28,15 @@ PetscErrorCode errors_set_from_options(errors *e, sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* <output_dir>/profile_t<t>.csv; C formatting of t (PETSc's would write "1.") */
+static PetscErrorCode errors_profile_path(const sim *s, double t, char *path, size_t len) {
+  char name[64];
+  PetscFunctionBeginUser;
+  snprintf(name, sizeof(name), "profile_t%g.csv", t);
+  PetscCall(sim_output_path(s, name, path, len));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx, double v_ref) {
   char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
@@ -43,6 +52,11 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
     PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
     PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "cannot write %s", path);
+    /* profiles of an earlier run in this directory would pass for this run's */
+    for (PetscInt k = 0; k < e->n_reports; k++) {
+      PetscCall(errors_profile_path(s, e->report_t[k], path, sizeof(path)));
+      (void)remove(path); /* absent is fine */
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -76,7 +90,7 @@ static int errors_compare_gid(const void *a, const void *b) {
 
 static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
-  char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   double *mine, *all = NULL;
   PetscMPIInt n_mine = 0, *counts = NULL, *displs = NULL;
   PetscFunctionBeginUser;
@@ -99,8 +113,7 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   PetscCall(PetscFree(mine));
   if (s->rank != 0) PetscFunctionReturn(0);
   qsort(all, (size_t)displs[s->size] / 4, 4 * sizeof(double), errors_compare_gid);
-  PetscCall(PetscSNPrintf(name, sizeof(name), "profile_t%g.csv", t_report));
-  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(errors_profile_path(s, t_report, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));

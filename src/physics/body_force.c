@@ -31,14 +31,15 @@ static void body_force_value(const body_force_data *d, double t, double a[DMHS_D
 static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   body_force_data *d = self->data;
   PetscInt n = DMHS_DIM;
+  PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
-  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, NULL));
+  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, &set));
   PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
                              d->period, &d->period, NULL));
   PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
   PetscOptionsEnd();
-  PetscCheck(n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-body_force takes %d components Fx,Fy (got %d)",
+  PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-body_force takes %d components Fx,Fy (got %d)",
              DMHS_DIM, (int)n);
   PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-body_force_period must be >= 0 (got %g)", d->period);
   body_force_value(d, 0.0, s->body_accel);

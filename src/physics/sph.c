@@ -11,6 +11,7 @@ const char *const sph_density_names[] = {"continuity", "summation", "sph_density
 
 typedef struct {
   sph_wall_work *wall;
+  PetscBool has_walls; /* any wall particle on any rank: else the wall pass is skipped */
 } sph_data;
 
 static PetscErrorCode sph_set_from_options(module *self, sim *s) {
@@ -46,8 +47,10 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
 
 static PetscErrorCode sph_setup(module *self, sim *s) {
   sph_data *d = self->data;
+  PetscInt n_local = particles_count_type(&s->ps, PTYPE_WALL), n_walls;
   PetscFunctionBeginUser;
-  (void)s;
+  PetscCallMPI(MPI_Allreduce(&n_local, &n_walls, 1, MPIU_INT, MPI_SUM, s->comm));
+  d->has_walls = n_walls > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(sph_wall_create(&d->wall));
   PetscFunctionReturn(0);
 }
@@ -57,7 +60,8 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
   PetscFunctionBeginUser;
   if (s->sph.density == SPH_DENSITY_SUMMATION) PetscCall(sph_density_summation(s));
   PetscCall(sph_eos_compute(s));
-  PetscCall(sph_wall_compute(s, d->wall));
+  if (d->has_walls) PetscCall(sph_wall_compute(s, d->wall));
+  else PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
   PetscCall(sph_force_compute(s));
   PetscFunctionReturn(0);
 }

@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""Error against run time: Poiseuille (or Couette) over resolution and time step.
+
+  scripts/post/sweep_channel.py [--dmhs build/dmhs] [--case poiseuille] [--t-end 1]
+                                [--out doc/img] [--table doc/validation-sweep.md]
+
+Runs dmhs at 10x20, 20x40 and 40x80 liquid particles (h = 3 dx) with dt at
+0.25, 0.5 and 0.9 of the viscous limit 0.125 (h/2)^2/nu, to --t-end, and
+records the L2 error at the end and the wall-clock of the step loop. Writes
+sweep_<case>.png (error against wall-clock, one line per resolution) and a
+Markdown table. Wall-clock is noisy on a shared machine: compare ratios.
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+RESOLUTIONS = [(10, 20), (20, 40), (40, 80)]
+DT_FRACTIONS = [0.25, 0.5, 0.9]
+WIDTH, LENGTH, NU = 1e-3, 5e-4, 1e-6
+
+
+def run(args, nx, ny, frac):
+    dx = WIDTH / ny
+    h = 3 * dx
+    dt = frac * 0.125 * (h / 2) ** 2 / NU
+    out = os.path.join(args.work, f"{args.case}_{nx}x{ny}_dt{frac}")
+    cmd = [args.dmhs, "-options_file", f"input/{args.case}.opts", "-channel_nx", str(nx), "-channel_ny", str(ny),
+           "-sph_h", repr(h), "-dt", repr(dt), "-t_end", repr(args.t_end), "-quiet", "-output_dir", out,
+           "-output_interval", repr(args.t_end / 10)]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "error.csv"), newline="") as f:
+        last = list(csv.DictReader(f))[-1]
+    return dict(nx=nx, ny=ny, dx=dx, dt=dt, frac=frac, l2=float(last["l2"]), linf=float(last["linf"]),
+                wall=float(last["wall_s"]), steps=int(last["step"]))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--dmhs", default="build/dmhs")
+    ap.add_argument("--case", default="poiseuille", choices=["poiseuille", "couette"])
+    ap.add_argument("--t-end", type=float, default=1.0)
+    ap.add_argument("--work", default="output/sweep")
+    ap.add_argument("--out", default="doc/img")
+    ap.add_argument("--table", default=None, help="write the Markdown table here (default: print only)")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    results = []
+    for nx, ny in RESOLUTIONS:
+        for frac in DT_FRACTIONS:
+            r = run(args, nx, ny, frac)
+            print(f"{nx}x{ny} dt={r['dt']:.3g} ({frac} of limit): L2 {100 * r['l2']:.4f} %  wall {r['wall']:.2f} s",
+                  file=sys.stderr)
+            results.append(r)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for nx, ny in RESOLUTIONS:
+        rs = [r for r in results if r["nx"] == nx]
+        ax.loglog([r["wall"] for r in rs], [100 * r["l2"] for r in rs], "o-", label=f"{nx} x {ny}")
+        for r in rs:
+            ax.annotate(f"{r['frac']}", (r["wall"], 100 * r["l2"]), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+    ax.set_xlabel("wall-clock of the step loop [s]")
+    ax.set_ylabel(f"L2 error at t = {args.t_end:g} s [% of v_ref]")
+    ax.set_title(f"{args.case}: error against run time (labels: dt / viscous limit)")
+    ax.legend()
+    fig.tight_layout()
+    png = os.path.join(args.out, f"sweep_{args.case}.png")
+    fig.savefig(png, dpi=120)
+
+    lines = ["| particles | dx [m] | dt [s] | dt / limit | steps | L2 [%] | Linf [%] | wall [s] |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        lines.append(f"| {r['nx']} x {r['ny']} | {r['dx']:.3g} | {r['dt']:.3g} | {r['frac']} | {r['steps']} | "
+                     f"{100 * r['l2']:.4f} | {100 * r['linf']:.4f} | {r['wall']:.2f} |")
+    table = "\n".join(lines) + "\n"
+    print(table)
+    if args.table:
+        with open(args.table, "w") as f:
+            f.write(table)
+    print(f"plot: {png}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,46 @@
+# What a user types: -help, bad options and values, pre-flight refusals, a
+# blow-up that must stop cleanly, -log_view. Label: cli.
+set(DMHS_INPUT ${PROJECT_SOURCE_DIR}/input)
+set(DMHS_EXPECT_FAIL bash ${CMAKE_CURRENT_LIST_DIR}/expect_fail.sh)
+set(DMHS_CLI_OUT ${CMAKE_BINARY_DIR}/test-output/cli)
+set(QUICK -options_file ${DMHS_INPUT}/poiseuille-quick.opts -quiet)
+
+add_test(NAME cli_help COMMAND ${DMHS_EXE} -help)
+set_tests_properties(cli_help PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "-scene <now poiseuille.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx")
+
+function(dmhs_cli_fail name regex)
+  add_test(NAME ${name} COMMAND ${DMHS_EXPECT_FAIL} "${regex}" -- ${DMHS_EXE} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS cli TIMEOUT 60)
+endfunction()
+
+dmhs_cli_fail(cli_unknown_option "unknown or unused option -sph_hh" ${QUICK} -sph_hh 1 -output_dir ${DMHS_CLI_OUT}/a)
+# a module the scene does not enable must not silently swallow its options
+dmhs_cli_fail(cli_option_not_in_scene "unknown or unused option -body_force"
+  -options_file ${DMHS_INPUT}/couette-quick.opts -body_force 1,0 -output_dir ${DMHS_CLI_OUT}/b)
+dmhs_cli_fail(cli_unknown_scene "-scene intestin: unknown scene" ${QUICK} -scene intestin)
+dmhs_cli_fail(cli_bad_value "-sph_h must be > 0" ${QUICK} -sph_h -1 -output_dir ${DMHS_CLI_OUT}/c)
+dmhs_cli_fail(cli_bad_enum "sph_kernel" ${QUICK} -sph_kernel gauss -output_dir ${DMHS_CLI_OUT}/d)
+dmhs_cli_fail(cli_non_square_lattice "lattice must be square" ${QUICK} -channel_nx 30 -output_dir ${DMHS_CLI_OUT}/e)
+dmhs_cli_fail(cli_unwritable_output_dir "-output_dir /proc/dmhs" ${QUICK} -output_dir /proc/dmhs/out)
+dmhs_cli_fail(cli_missing_options_file "options_file|Unable to open" -options_file ${DMHS_INPUT}/no-such-case.opts)
+# the published dt = 1e-4 s exceeds the viscous limit at 40 x 80: refused before step 0
+dmhs_cli_fail(cli_preflight_published_dt "viscosity .*EXCEEDED.*pre-flight check failed"
+  -options_file ${DMHS_INPUT}/poiseuille.opts -dt 1e-4 -output_dir ${DMHS_CLI_OUT}/f)
+# the published intestine ratio h = dx leaves no neighbour inside the support
+dmhs_cli_fail(cli_preflight_h_equals_dx "0 neighbours inside the support.*TOO FEW"
+  ${QUICK} -sph_h 2.5e-5 -dt 1e-5 -output_dir ${DMHS_CLI_OUT}/g)
+# forced past the limits, the run must stop with step, time, particle and field, and no NaN written
+add_test(NAME cli_blowup_stops_cleanly COMMAND ${DMHS_EXPECT_FAIL}
+  "run blew up at step [0-9]+, t = .* particle gid [0-9]+ .*(density|velocity|position|pressure)|escaped the domain"
+  --no-nan ${DMHS_CLI_OUT}/blowup --
+  ${DMHS_EXE} ${QUICK} -dt 2e-3 -preflight warn -t_end 0.5 -output_interval 0.002 -output_dir ${DMHS_CLI_OUT}/blowup)
+set_tests_properties(cli_blowup_stops_cleanly PROPERTIES LABELS cli TIMEOUT 60)
+
+add_test(NAME cli_log_view COMMAND ${DMHS_EXE} ${QUICK} -t_end 0.01 -log_view -output_dir ${DMHS_CLI_OUT}/h)
+set_tests_properties(cli_log_view PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "SphForce.*SphWall.*BodyForce|SphWall.*SphForce")
+add_test(NAME cli_summary_line COMMAND ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -t_end 0.01
+  -output_dir ${DMHS_CLI_OUT}/i)
+set_tests_properties(cli_summary_line PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "step +[0-9]+ +t .*particle-steps/s .*ETA.*max\\|v\\|.*dmhs summary: .*particle-steps/s: [0-9.e+]+")

@@ -1,0 +1,174 @@
+/* Ghosts (src/core/halo.c) and the pair list (src/core/cells.c) against a
+ * brute-force O(N^2) minimum-image search. For random particles in a box periodic
+ * in both directions, periodic in x only (closed y, with wall particles), and a
+ * box only slightly larger than 2 * cutoff, it proves that:
+ *   - every pair is listed once, with i < j, at least one owned, not two walls,
+ *     and closer than the cutoff;
+ *   - ghost rows carry their source's gid and sit exactly one shift away from it;
+ *   - mapping each pair to the gids of its particles, every owned particle's
+ *     multiset of neighbour gids equals the brute-force one (all other owned
+ *     particles within the cutoff at minimum image, walls not pairing with walls). */
+#include <stdlib.h>
+#include "unit_common.h"
+#include "dmhs/cells.h"
+#include "dmhs/halo.h"
+
+static int cmp_i64(const void *a, const void *b) {
+  const PetscInt64 x = *(const PetscInt64 *)a, y = *(const PetscInt64 *)b;
+  return (x > y) - (x < y);
+}
+
+typedef struct {
+  const char *name;
+  double L[2];
+  PetscBool periodic[2];
+  double cutoff;
+  PetscInt n;
+  double wall_fraction; /* share of particles made walls */
+  double lattice;       /* > 0: a square lattice of this spacing from lo (points on lo) instead */
+} cells_case;
+
+static void run_case(const cells_case *cc, uint64_t seed) {
+  unit_rng g = {seed};
+  const domain d = {.lo = {-0.3, 1.0},
+                   .hi = {-0.3 + cc->L[0], 1.0 + cc->L[1]},
+                   .periodic = {cc->periodic[0], cc->periodic[1]}};
+  const double cut = cc->cutoff, cut2 = cut * cut;
+  OK(domain_check_ghost_width(&d, cut));
+  particles ps;
+  halo hal;
+  cells cel;
+  OK(particles_create(&ps));
+  const PetscInt nx = cc->lattice > 0 ? (PetscInt)round(cc->L[0] / cc->lattice) : 0;
+  for (PetscInt i = 0; i < cc->n; i++) {
+    double x[2] = {unit_range(&g, d.lo[0], d.hi[0]), unit_range(&g, d.lo[1], d.hi[1])};
+    const double v[2] = {0, 0};
+    if (nx) {
+      x[0] = d.lo[0] + (double)(i % nx) * cc->lattice;
+      x[1] = d.lo[1] + (double)(i / nx) * cc->lattice;
+    }
+    const particle_type t = unit_uniform(&g) < cc->wall_fraction ? PTYPE_WALL : PTYPE_FLUID;
+    OK(particles_add_owned(&ps, 7 * i + 3, t, x, v, 1.0, 1.0, NULL));
+  }
+  OK(halo_create(&hal, cut, PETSC_COMM_SELF));
+  OK(halo_build(&hal, &d, NULL, &ps)); /* one rank: no partition needed */
+  OK(cells_create(&cel));
+  const double lo[2] = {d.lo[0] - cut, d.lo[1] - cut}, hi[2] = {d.hi[0] + cut, d.hi[1] + cut};
+  OK(cells_build_pairs(&cel, &ps, lo, hi, cut));
+
+  const PetscInt n = ps.n_owned, rows = n + ps.n_ghost;
+  assert_int_equal(ps.n_ghost, hal.n);
+  for (PetscInt gh = 0; gh < hal.n; gh++) {
+    const PetscInt row = n + gh, src = hal.source[gh];
+    assert_true(src >= 0 && src < n);
+    assert_true(ps.gid[row] == ps.gid[src] && ps.type[row] == ps.type[src]);
+    assert_true(ps.x[row][0] == ps.x[src][0] + hal.shift[gh][0]);
+    assert_true(ps.x[row][1] == ps.x[src][1] + hal.shift[gh][1]);
+  }
+
+  /* neighbour gid lists from the pair list, per owned row */
+  PetscInt *count, *fill;
+  PetscInt64 *nb;
+  OK(PetscCalloc2(n + 1, &count, n + 1, &fill));
+  for (PetscInt k = 0; k < cel.n_pairs; k++) {
+    const PetscInt i = cel.pair_i[k], j = cel.pair_j[k];
+    assert_true(i >= 0 && i < j && j < rows && i < n);
+    assert_false(ps.type[i] == PTYPE_WALL && ps.type[j] == PTYPE_WALL);
+    const double dx = ps.x[i][0] - ps.x[j][0], dy = ps.x[i][1] - ps.x[j][1];
+    assert_true(dx * dx + dy * dy < cut2);
+    count[i + 1]++;
+    if (j < n) count[j + 1]++;
+  }
+  for (PetscInt i = 0; i < n; i++) count[i + 1] += count[i];
+  OK(PetscMalloc1(count[n] + 1, &nb));
+  OK(PetscArraycpy(fill, count, n));
+  for (PetscInt k = 0; k < cel.n_pairs; k++) {
+    const PetscInt i = cel.pair_i[k], j = cel.pair_j[k];
+    nb[fill[i]++] = ps.gid[j];
+    if (j < n) nb[fill[j]++] = ps.gid[i];
+  }
+
+  /* brute force per owned particle */
+  PetscInt64 *ref;
+  OK(PetscMalloc1(n, &ref));
+  PetscInt total = 0;
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt m = 0;
+    for (PetscInt j = 0; j < n; j++) {
+      if (j == i || (ps.type[i] == PTYPE_WALL && ps.type[j] == PTYPE_WALL)) continue;
+      double r[2] = {ps.x[i][0] - ps.x[j][0], ps.x[i][1] - ps.x[j][1]};
+      domain_min_image(&d, r);
+      if (r[0] * r[0] + r[1] * r[1] < cut2) ref[m++] = ps.gid[j];
+    }
+    PetscInt64 *got = nb + count[i];
+    const PetscInt n_got = count[i + 1] - count[i];
+    qsort(ref, (size_t)m, sizeof(*ref), cmp_i64);
+    qsort(got, (size_t)n_got, sizeof(*got), cmp_i64);
+    if (n_got != m)
+      fail_msg("%s: particle gid %lld has %d listed neighbours, brute force %d", cc->name,
+               (long long)ps.gid[i], (int)n_got, (int)m);
+    for (PetscInt k = 0; k < m; k++)
+      if (got[k] != ref[k])
+        fail_msg("%s: particle gid %lld: neighbour sets differ", cc->name, (long long)ps.gid[i]);
+    total += m;
+  }
+  assert_true(total > cc->n); /* the case is not vacuous */
+  OK(PetscFree(ref));
+  OK(PetscFree(nb));
+  OK(PetscFree2(count, fill));
+  OK(cells_destroy(&cel));
+  OK(halo_destroy(&hal));
+  OK(particles_destroy(&ps));
+}
+
+static void test_periodic_both(void **state) {
+  (void)state;
+  const cells_case c = {"periodic x,y", {1.0, 0.7}, {PETSC_TRUE, PETSC_TRUE}, 0.093, 600, 0.0, 0};
+  for (uint64_t seed = 1; seed <= 3; seed++) run_case(&c, seed);
+}
+
+static void test_periodic_x_closed_y(void **state) {
+  (void)state;
+  const cells_case c = {"periodic x, closed y", {0.8, 0.6}, {PETSC_TRUE, PETSC_FALSE},
+                        0.071, 500, 0.3, 0};
+  for (uint64_t seed = 11; seed <= 13; seed++) run_case(&c, seed);
+}
+
+static void test_box_just_over_twice_cutoff(void **state) {
+  (void)state;
+  const cells_case c = {"tight periodic", {2.001 * 0.1, 2.0005 * 0.1}, {PETSC_TRUE, PETSC_TRUE},
+                        0.1, 60, 0.0, 0};
+  for (uint64_t seed = 21; seed <= 30; seed++) run_case(&c, seed);
+  const cells_case c2 = {"tight x, closed y", {2.001 * 0.1, 0.35}, {PETSC_TRUE, PETSC_FALSE},
+                         0.1, 80, 0.2, 0};
+  for (uint64_t seed = 31; seed <= 40; seed++) run_case(&c2, seed);
+}
+
+static void test_closed_box(void **state) {
+  (void)state;
+  const cells_case c = {"closed", {0.55, 0.43}, {PETSC_FALSE, PETSC_FALSE}, 0.05, 400, 0.1, 0};
+  run_case(&c, 77);
+}
+
+/* Points exactly on the lower boundaries; spacing incommensurate with the cutoff
+ * (lattice distances^2 / dx^2 are integers, never (0.07/0.03)^2). */
+static void test_lattice(void **state) {
+  (void)state;
+  const cells_case c = {"lattice periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_TRUE},
+                        0.07, 20 * 15, 0.0, 0.03};
+  run_case(&c, 5);
+  const cells_case c2 = {"lattice x periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_FALSE},
+                         0.07, 20 * 16, 0.0, 0.03};
+  run_case(&c2, 6);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_periodic_both),
+      cmocka_unit_test(test_periodic_x_closed_y),
+      cmocka_unit_test(test_box_just_over_twice_cutoff),
+      cmocka_unit_test(test_closed_box),
+      cmocka_unit_test(test_lattice),
+  };
+  return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
+}

@@ -1,0 +1,67 @@
+/* Equations of state (src/physics/sph_eos.h). Proves:
+ *   - Tait: p(rho0) = 0 and p = B((rho/rho0)^7 - 1), B = c0^2 rho0 / 7, at several densities;
+ *   - linear p = c0^2 rho and linear-shifted p = c0^2 (rho - rho0);
+ *   - sph_eos_density inverts sph_eos_pressure for every kind (round trip to 1e-12 relative);
+ *   - Tait tension below -B gives a small positive density, not NaN. */
+#include "unit_common.h"
+#include "physics/sph_eos.h"
+
+static const double rho0 = 998.2, c0 = 13.5;
+static const double rhos[] = {900.0, 990.0, 998.2, 1003.7, 1050.0, 1200.0};
+#define N_RHO (sizeof(rhos) / sizeof(rhos[0]))
+
+static void test_tait(void **state) {
+  (void)state;
+  const double B = c0 * c0 * rho0 / 7.0;
+  assert_close(sph_eos_pressure(SPH_EOS_TAIT, rho0, rho0, c0), 0.0, 1e-12 * B);
+  for (size_t i = 0; i < N_RHO; i++) {
+    const double expect = B * (pow(rhos[i] / rho0, 7.0) - 1.0);
+    assert_close(sph_eos_pressure(SPH_EOS_TAIT, rhos[i], rho0, c0), expect, 1e-12 * B);
+  }
+  /* small compressions: dp/drho = c0^2 at rho0 */
+  const double d = 1e-4 * rho0;
+  const double p_plus = sph_eos_pressure(SPH_EOS_TAIT, rho0 + d, rho0, c0);
+  const double p_minus = sph_eos_pressure(SPH_EOS_TAIT, rho0 - d, rho0, c0);
+  const double slope = (p_plus - p_minus) / (2.0 * d);
+  assert_close(slope, c0 * c0, 1e-6 * c0 * c0);
+}
+
+static void test_linear(void **state) {
+  (void)state;
+  for (size_t i = 0; i < N_RHO; i++) {
+    const double tol = 1e-12 * c0 * c0 * rho0;
+    assert_close(sph_eos_pressure(SPH_EOS_LINEAR, rhos[i], rho0, c0), c0 * c0 * rhos[i], tol);
+    assert_close(sph_eos_pressure(SPH_EOS_LINEAR_SHIFTED, rhos[i], rho0, c0),
+                 c0 * c0 * (rhos[i] - rho0), tol);
+  }
+  assert_true(sph_eos_pressure(SPH_EOS_LINEAR_SHIFTED, rho0, rho0, c0) == 0.0);
+}
+
+static void test_density_inverts_pressure(void **state) {
+  (void)state;
+  const sph_eos_kind kinds[] = {SPH_EOS_TAIT, SPH_EOS_LINEAR, SPH_EOS_LINEAR_SHIFTED};
+  for (int k = 0; k < 3; k++)
+    for (size_t i = 0; i < N_RHO; i++) {
+      const double p = sph_eos_pressure(kinds[k], rhos[i], rho0, c0);
+      const double back = sph_eos_density(kinds[k], p, rho0, c0);
+      if (fabs(back - rhos[i]) > 1e-12 * rhos[i])
+        fail_msg("eos %d: rho %.17g -> p %.17g -> rho %.17g", k, rhos[i], p, back);
+    }
+}
+
+static void test_tait_tension_clamped(void **state) {
+  (void)state;
+  const double B = c0 * c0 * rho0 / 7.0;
+  const double rho = sph_eos_density(SPH_EOS_TAIT, -2.0 * B, rho0, c0);
+  assert_true(isfinite(rho) && rho > 0.0 && rho < 0.1 * rho0);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_tait),
+      cmocka_unit_test(test_linear),
+      cmocka_unit_test(test_density_inverts_pressure),
+      cmocka_unit_test(test_tait_tension_clamped),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

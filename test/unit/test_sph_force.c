@@ -1,0 +1,256 @@
+/* SPH momentum and continuity pair terms (src/physics/sph_force_iact.h) and the
+ * whole force sweep (sph_force_compute). Proves:
+ *   - swapping i and j (r_ij -> -r_ij, v_ij -> -v_ij, rho and p swapped) negates
+ *     the momentum pair term T, with and without artificial viscosity, so
+ *     m_i a_i + m_j a_j = 0, and leaves the continuity scalar unchanged;
+ *   - pressure pushes a pair apart;
+ *   - on a random cloud in a periodic box (ghosts + pair list), for every kernel,
+ *     with and without artificial viscosity and continuity: each owned particle's
+ *     acceleration (and d rho/dt) equals a brute-force minimum-image sum over all
+ *     other particles, and the total momentum change sum m_i a_i is zero to
+ *     round-off (1e-12 of sum |m_i a_i|);
+ *   - summation density on the same clouds equals the brute-force sum (self term
+ *     included) and ghosts carry their source's density. */
+#include "unit_common.h"
+#include "dmhs/sim.h"
+#include "physics/sph_force.h"
+#include "physics/sph_force_iact.h"
+#include "physics/sph_eos.h"
+
+static const double h = 0.1, rho0 = 1000.0, c0 = 10.0, nu = 1e-3;
+
+typedef struct {
+  double rij[2], r, dwdr, rho_i, rho_j, p_i, p_j, v_i[2], v_j[2];
+} pair_state;
+
+static pair_state random_pair(unit_rng *g, sph_kernel_kind kernel) {
+  pair_state P;
+  const double r = unit_range(g, 0.02 * h, 0.98 * h), phi = unit_range(g, 0.0, 2.0 * M_PI);
+  P.rij[0] = r * cos(phi);
+  P.rij[1] = r * sin(phi);
+  P.r = r;
+  double w = 0;
+  sph_kernel_eval(kernel, 2, sph_kernel_norm(kernel, 2, h), h, r, &w, &P.dwdr);
+  P.rho_i = unit_range(g, 0.97, 1.03) * rho0;
+  P.rho_j = unit_range(g, 0.97, 1.03) * rho0;
+  P.p_i = sph_eos_pressure(SPH_EOS_TAIT, P.rho_i, rho0, c0);
+  P.p_j = sph_eos_pressure(SPH_EOS_TAIT, P.rho_j, rho0, c0);
+  for (int k = 0; k < 2; k++) {
+    P.v_i[k] = unit_range(g, -1.0, 1.0);
+    P.v_j[k] = unit_range(g, -1.0, 1.0);
+  }
+  return P;
+}
+
+/* T for the pair seen from i (sign +1) or from j (sign -1, everything swapped). */
+static void pair_term(const pair_state *P, int from_j, double alpha, double beta, double T[2]) {
+  const double s = from_j ? -1.0 : 1.0;
+  const double rij[2] = {s * P->rij[0], s * P->rij[1]};
+  const double vij[2] = {s * (P->v_i[0] - P->v_j[0]), s * (P->v_i[1] - P->v_j[1])};
+  const double rho_a = from_j ? P->rho_j : P->rho_i, rho_b = from_j ? P->rho_i : P->rho_j;
+  const double p_a = from_j ? P->p_j : P->p_i, p_b = from_j ? P->p_i : P->p_j;
+  sph_force_iact(rij, P->r, P->dwdr, rho_a, rho_b, p_a, p_b, vij, 2.0 * rho0 * nu, T);
+  sph_force_iact_artificial_viscosity(rij, P->r, P->dwdr, rho_a, rho_b, vij, alpha, beta, c0, h, T);
+}
+
+static void test_pair_antisymmetry(void **state) {
+  (void)state;
+  unit_rng g = {42};
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  int approaching = 0;
+  for (int trial = 0; trial < 3000; trial++) {
+    const pair_state P = random_pair(&g, kernels[trial % 3]);
+    const double alpha = (trial / 3) % 2 ? 0.1 : 0.0, beta = (trial / 3) % 2 ? 0.2 : 0.0;
+    double Tij[2], Tji[2];
+    pair_term(&P, 0, alpha, beta, Tij);
+    pair_term(&P, 1, alpha, beta, Tji);
+    const double mag = hypot(Tij[0], Tij[1]);
+    assert_true(mag > 0.0);
+    assert_close(Tji[0], -Tij[0], 1e-14 * mag);
+    assert_close(Tji[1], -Tij[1], 1e-14 * mag);
+    /* m_i a_i + m_j a_j = m_i m_j (T_ij + T_ji) = 0 */
+    const double vij[2] = {P.v_i[0] - P.v_j[0], P.v_i[1] - P.v_j[1]};
+    const double vji[2] = {-vij[0], -vij[1]}, rji[2] = {-P.rij[0], -P.rij[1]};
+    const double q_ij = sph_continuity_iact(P.rij, P.r, P.dwdr, vij);
+    const double q_ji = sph_continuity_iact(rji, P.r, P.dwdr, vji);
+    assert_close(q_ji, q_ij, 1e-14 * fabs(q_ij));
+    approaching += vij[0] * P.rij[0] + vij[1] * P.rij[1] < 0;
+  }
+  assert_true(approaching > 500); /* the artificial viscosity branch ran */
+}
+
+static void test_artificial_viscosity_only_when_approaching(void **state) {
+  (void)state;
+  unit_rng g = {7};
+  for (int trial = 0; trial < 200; trial++) {
+    const pair_state P = random_pair(&g, SPH_KERNEL_WENDLAND);
+    double T0[2], T1[2];
+    pair_term(&P, 0, 0.0, 0.0, T0);
+    pair_term(&P, 0, 1.0, 2.0, T1);
+    const double vr = (P.v_i[0] - P.v_j[0]) * P.rij[0] + (P.v_i[1] - P.v_j[1]) * P.rij[1];
+    if (vr >= 0) assert_true(T0[0] == T1[0] && T0[1] == T1[1]);
+    /* approaching pairs are pushed apart harder */
+    else assert_true((T1[0] - T0[0]) * P.rij[0] + (T1[1] - T0[1]) * P.rij[1] > 0.0);
+  }
+}
+
+static void test_pressure_repels(void **state) {
+  (void)state;
+  unit_rng g = {3};
+  for (int trial = 0; trial < 100; trial++) {
+    pair_state P = random_pair(&g, SPH_KERNEL_CUBIC);
+    P.p_i = fabs(P.p_i) + 1.0;
+    P.p_j = fabs(P.p_j) + 1.0;
+    P.v_i[0] = P.v_j[0];
+    P.v_i[1] = P.v_j[1];
+    double T[2];
+    pair_term(&P, 0, 0.0, 0.0, T);
+    assert_true(T[0] * P.rij[0] + T[1] * P.rij[1] > 0.0);
+  }
+}
+
+/* ---- whole sweep ---- */
+
+/* A random cloud of n fluid particles in a periodic [0, Lx) x [0, Ly) box, with
+ * ghosts and the pair list built as sim_rebuild_neighbours does. */
+static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha,
+                        sph_density_kind density, unit_rng *g) {
+  OK(PetscMemzero(s, sizeof(*s)));
+  s->comm = PETSC_COMM_SELF;
+  s->sph = (sph_params){.kernel = kernel, .h = h, .rho0 = rho0, .c0 = c0, .nu = nu,
+                        .eos = SPH_EOS_TAIT, .density = density, .av_alpha = alpha,
+                        .av_beta = 2.0 * alpha};
+  s->sph_enabled = PETSC_TRUE;
+  s->dom = (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
+  s->pair_cutoff = h;
+  OK(particles_create(&s->ps));
+  for (PetscInt i = 0; i < n; i++) {
+    const double x[2] = {unit_range(g, 0.0, 0.5), unit_range(g, 0.0, 0.35)};
+    const double v[2] = {unit_range(g, -1.0, 1.0), unit_range(g, -1.0, 1.0)};
+    const double rho = unit_range(g, 0.98, 1.02) * rho0;
+    PetscInt idx;
+    const double m = unit_range(g, 0.5, 1.5);
+    OK(particles_add_owned(&s->ps, 1000 + i, PTYPE_FLUID, x, v, m, rho, &idx));
+    s->ps.p[idx] = sph_eos_pressure(SPH_EOS_TAIT, rho, rho0, c0);
+    s->ps.v_est[idx][0] = v[0] + unit_range(g, -0.1, 0.1); /* distinct from v_visc */
+    s->ps.v_est[idx][1] = v[1] + unit_range(g, -0.1, 0.1);
+  }
+  OK(halo_create(&s->hal, h, PETSC_COMM_SELF));
+  OK(halo_build(&s->hal, &s->dom, NULL, &s->ps)); /* one rank: no partition needed */
+  OK(cells_create(&s->cel));
+  const double lo[2] = {-h, -h}, hi[2] = {0.5 + h, 0.35 + h};
+  OK(cells_build_pairs(&s->cel, &s->ps, lo, hi, h));
+  const PetscInt rows = s->ps.n_owned + s->ps.n_ghost;
+  OK(PetscArrayzero(s->ps.a, rows));
+  OK(PetscArrayzero(s->ps.drho, rows));
+}
+
+static void destroy_cloud(sim *s) {
+  OK(cells_destroy(&s->cel));
+  OK(halo_destroy(&s->hal));
+  OK(particles_destroy(&s->ps));
+}
+
+/* Acceleration and density rate of owned particle i by direct summation over all
+ * other owned particles with the minimum-image separation. */
+static void brute_force(const sim *s, PetscInt i, double a[2], double *drho) {
+  const particles *ps = &s->ps;
+  const sph_params *sp = &s->sph;
+  const double norm = sph_kernel_norm(sp->kernel, 2, h);
+  a[0] = a[1] = *drho = 0.0;
+  for (PetscInt j = 0; j < ps->n_owned; j++) {
+    if (j == i) continue;
+    double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    domain_min_image(&s->dom, rij);
+    const double r = hypot(rij[0], rij[1]);
+    if (r >= h) continue;
+    double w = 0, dwdr = 0, T[2];
+    sph_kernel_eval(sp->kernel, 2, norm, h, r, &w, &dwdr);
+    const double vv[2] = {ps->v_visc[i][0] - ps->v_visc[j][0], ps->v_visc[i][1] - ps->v_visc[j][1]};
+    const double ve[2] = {ps->v_est[i][0] - ps->v_est[j][0], ps->v_est[i][1] - ps->v_est[j][1]};
+    sph_force_iact(rij, r, dwdr, ps->rho[i], ps->rho[j], ps->p[i], ps->p[j], vv, 2.0 * rho0 * nu,
+                   T);
+    if (sp->av_alpha > 0)
+      sph_force_iact_artificial_viscosity(rij, r, dwdr, ps->rho[i], ps->rho[j], ve, sp->av_alpha,
+                                          sp->av_beta, c0, h, T);
+    a[0] += ps->mass[j] * T[0];
+    a[1] += ps->mass[j] * T[1];
+    *drho += ps->mass[j] * sph_continuity_iact(rij, r, dwdr, ve);
+  }
+}
+
+static void test_sweep_conserves_momentum(void **state) {
+  (void)state;
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  unit_rng g = {2024};
+  static sim s;
+  for (int k = 0; k < 3; k++)
+    for (int av = 0; av < 2; av++)
+      for (int cont = 0; cont < 2; cont++) {
+        const sph_density_kind density = cont ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION;
+        build_cloud(&s, 150, kernels[k], av ? 0.5 : 0.0, density, &g);
+        assert_true(s.ps.n_ghost > 0 && s.cel.n_pairs > 150);
+        OK(sph_force_compute(&s));
+        double P[2] = {0, 0}, scale = 0, amax = 0, dmax = 0;
+        for (PetscInt i = 0; i < s.ps.n_owned; i++)
+          for (int d = 0; d < 2; d++) {
+            P[d] += s.ps.mass[i] * s.ps.a[i][d];
+            scale += fabs(s.ps.mass[i] * s.ps.a[i][d]);
+            amax = fmax(amax, fabs(s.ps.a[i][d]));
+          }
+        for (PetscInt i = 0; i < s.ps.n_owned; i++) dmax = fmax(dmax, fabs(s.ps.drho[i]));
+        assert_true(scale > 0);
+        if (fabs(P[0]) > 1e-12 * scale || fabs(P[1]) > 1e-12 * scale)
+          fail_msg("kernel %d av %d continuity %d: sum m a = (%g, %g), sum |m a| = %g", k, av, cont,
+                   P[0], P[1], scale);
+        for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+          double a[2], drho;
+          brute_force(&s, i, a, &drho);
+          assert_close(s.ps.a[i][0], a[0], 1e-12 * amax);
+          assert_close(s.ps.a[i][1], a[1], 1e-12 * amax);
+          if (cont) assert_close(s.ps.drho[i], drho, 1e-12 * dmax);
+          else assert_true(s.ps.drho[i] == 0.0);
+        }
+        destroy_cloud(&s);
+      }
+}
+
+/* Summation density over the same clouds: rho_i = sum_j m_j W_ij (self included)
+ * for owned rows, and each ghost row takes its source's value. */
+static void test_summation_density(void **state) {
+  (void)state;
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  unit_rng g = {77};
+  static sim s;
+  for (int k = 0; k < 3; k++) {
+    build_cloud(&s, 150, kernels[k], 0.0, SPH_DENSITY_SUMMATION, &g);
+    OK(sph_density_summation(&s));
+    const particles *ps = &s.ps;
+    const double norm = sph_kernel_norm(kernels[k], 2, h);
+    for (PetscInt i = 0; i < ps->n_owned; i++) {
+      double sum = ps->mass[i] * norm; /* W(0) = norm for all three kernels */
+      for (PetscInt j = 0; j < ps->n_owned; j++) {
+        if (j == i) continue;
+        double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]}, w = 0, dwdr = 0;
+        domain_min_image(&s.dom, rij);
+        sph_kernel_eval(kernels[k], 2, norm, h, hypot(rij[0], rij[1]), &w, &dwdr);
+        sum += ps->mass[j] * w;
+      }
+      assert_close(ps->rho[i], sum, 1e-12 * sum);
+    }
+    for (PetscInt gh = 0; gh < ps->n_ghost; gh++)
+      assert_true(ps->rho[ps->n_owned + gh] == ps->rho[s.hal.source[gh]]);
+    destroy_cloud(&s);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_pair_antisymmetry),
+      cmocka_unit_test(test_artificial_viscosity_only_when_approaching),
+      cmocka_unit_test(test_pressure_repels),
+      cmocka_unit_test(test_sweep_conserves_momentum),
+      cmocka_unit_test(test_summation_density),
+  };
+  return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
+}
