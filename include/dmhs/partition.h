@@ -19,6 +19,8 @@ typedef struct partition {
   double inv_edge[DMHS_DIM];
   PetscInt n_cells;
   PetscMPIInt *owner;     /* rank owning each cell, row-major (iy * nc[0] + ix) */
+  char *frontier;         /* this rank's cells with a neighbour owned elsewhere or across a
+                             periodic boundary: only their particles can be ghosts anywhere */
   /* options */
   double imbalance_max;   /* -partition_imbalance: repartition above this max/mean */
   PetscInt interval;      /* -partition_interval: steps between imbalance checks (0 = never) */

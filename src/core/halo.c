@@ -115,6 +115,7 @@ static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *
       c[k] = (PetscInt)floor((x[k] - part->lo[k]) * part->inv_edge[k]);
       c[k] = PetscMin(PetscMax(c[k], 0), part->nc[k] - 1);
     }
+    if (!part->frontier[c[1] * part->nc[0] + c[0]]) continue; /* deep inside this rank */
     /* distinct (rank, shift) destinations of this particle: at most 9 */
     PetscMPIInt seen_rank[9];
     double seen_shift[9][DMHS_DIM];

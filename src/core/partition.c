@@ -78,6 +78,31 @@ static PetscErrorCode partition_graph(const partition *p, const PetscBool period
   PetscFunctionReturn(0);
 }
 
+/* Marks this rank's cells whose 3 x 3 neighbourhood reaches another rank or
+ * wraps around a periodic boundary (halo.c skips particles of other cells). */
+static void partition_mark_frontier(partition *p, const sim *s) {
+  for (PetscInt cy = 0; cy < p->nc[1]; cy++)
+    for (PetscInt cx = 0; cx < p->nc[0]; cx++) {
+      const PetscInt self = cy * p->nc[0] + cx;
+      char f = 0;
+      if (p->owner[self] == s->rank)
+        for (int dy = -1; dy <= 1 && !f; dy++)
+          for (int dx = -1; dx <= 1 && !f; dx++) {
+            const PetscInt ux = cx + dx, uy = cy + dy;
+            if (ux < 0 || ux >= p->nc[0]) {
+              f = s->dom.periodic[0];
+              continue;
+            }
+            if (uy < 0 || uy >= p->nc[1]) {
+              f = s->dom.periodic[1];
+              continue;
+            }
+            f = p->owner[uy * p->nc[0] + ux] != s->rank;
+          }
+      p->frontier[self] = f;
+    }
+}
+
 /* Rank 0 partitions with `counts` (its own array; other ranks pass NULL) and
  * broadcasts the owners. A METIS failure on rank 0 is reported on every rank. */
 static PetscErrorCode partition_run(partition *p, sim *s, const PetscInt *counts) {
@@ -109,6 +134,7 @@ static PetscErrorCode partition_run(partition *p, sim *s, const PetscInt *counts
   if (status[0]) PetscCall(partition_metis_check((int)status[0], "PartGraphKway (on rank 0)"));
   PetscCallMPI(MPI_Bcast(p->owner, (PetscMPIInt)p->n_cells, MPI_INT, 0, s->comm));
   p->edge_cut = status[1];
+  partition_mark_frontier(p, s);
   PetscCall(PetscLogEventEnd(events.partition, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -130,6 +156,7 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
     p->n_cells *= p->nc[k];
   }
   PetscCall(PetscCalloc1(p->n_cells, &p->owner));
+  PetscCall(PetscCalloc1(p->n_cells, &p->frontier));
   if (s->size == 1) PetscFunctionReturn(0);
   PetscCheck(p->n_cells >= s->size, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "partition: the box holds only %" PetscInt_FMT " cells of the ghost width %g m, fewer than the %d ranks; "
@@ -177,6 +204,7 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
 PetscErrorCode partition_destroy(partition *p) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(p->owner));
+  PetscCall(PetscFree(p->frontier));
   PetscFunctionReturn(0);
 }
 
