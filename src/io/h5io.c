@@ -34,7 +34,11 @@ PetscErrorCode h5io_create(MPI_Comm comm, const char *path, hid_t *fid) {
   hid_t fapl;
   PetscFunctionBeginUser;
   PetscCall(h5io_fapl(comm, path, &fapl));
-  PetscCallHDF5(path, *fid = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl));
+  if ((*fid = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl)) < 0) {
+    char msg[360];
+    h5check_describe(msg, sizeof(msg));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create the HDF5 file %s: %s", path, msg);
+  }
   PetscCallHDF5(path, H5Pclose(fapl));
   PetscFunctionReturn(0);
 }
@@ -45,7 +49,12 @@ PetscErrorCode h5io_open(MPI_Comm comm, const char *path, hid_t *fid) {
   PetscCheck(access(path, R_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot read %s: %s", path,
              strerror(errno));
   PetscCall(h5io_fapl(comm, path, &fapl));
-  PetscCallHDF5(path, *fid = H5Fopen(path, H5F_ACC_RDONLY, fapl));
+  if ((*fid = H5Fopen(path, H5F_ACC_RDONLY, fapl)) < 0) {
+    char msg[360];
+    h5check_describe(msg, sizeof(msg));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot open %s as an HDF5 file (truncated, or not HDF5): %s", path,
+            msg);
+  }
   PetscCallHDF5(path, H5Pclose(fapl));
   PetscFunctionReturn(0);
 }
@@ -140,7 +149,8 @@ PetscErrorCode h5io_write_rows(MPI_Comm comm, const char *path, hid_t loc, const
   PetscCallHDF5(path, dset = H5Dcreate2(loc, f->name, mtype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   PetscCall(h5io_select_rows(path, fspace, rank_dims, n_local, offset, width_file, &mspace));
   PetscCall(h5io_xfer(path, &dxpl));
-  PetscCallHDF5(path, H5Dwrite(dset, mtype, mspace, fspace, dxpl, buf));
+  /* an empty dataset has no storage to write to */
+  if (n_global > 0) PetscCallHDF5(path, H5Dwrite(dset, mtype, mspace, fspace, dxpl, buf));
   PetscCall(h5io_put_string(path, dset, "unit", f->unit));
   PetscCallHDF5(path, H5Pclose(dxpl));
   PetscCallHDF5(path, H5Sclose(mspace));
@@ -184,7 +194,7 @@ PetscErrorCode h5io_read_rows(MPI_Comm comm, const char *path, hid_t loc, const 
              path, (int)cls, size);
   PetscCall(h5io_select_rows(path, fspace, rank_dims, n_local, offset, f->width, &mspace));
   PetscCall(h5io_xfer(path, &dxpl));
-  PetscCallHDF5(path, H5Dread(dset, mtype, mspace, fspace, dxpl, n_local ? data : (void *)dummy));
+  if (n_global > 0) PetscCallHDF5(path, H5Dread(dset, mtype, mspace, fspace, dxpl, n_local ? data : (void *)dummy));
   PetscCallHDF5(path, H5Pclose(dxpl));
   PetscCallHDF5(path, H5Sclose(mspace));
   PetscCallHDF5(path, H5Sclose(fspace));
