@@ -10,6 +10,7 @@
 #include "dmhs/module.h"
 #include "dmhs/scene.h"
 #include "dmhs/sph.h"
+#include "dmhs/io.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -48,6 +49,9 @@ typedef struct sim {
   /* timing */
   double loop_start_wtime, loop_seconds;
   PetscInt64 particle_steps; /* owned particles x steps, summed over ranks */
+
+  /* snapshots, checkpoints, restart, run.json (src/io/io.c) */
+  io_state io;
 } sim;
 
 PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only);

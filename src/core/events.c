@@ -23,5 +23,6 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("Diagnostics", id, &events.diagnostics));
   PetscCall(PetscLogEventRegister("Output", id, &events.output));
   PetscCall(PetscLogEventRegister("CheckState", id, &events.check_state));
+  PetscCall(PetscLogEventRegister("Checkpoint", id, &events.checkpoint));
   PetscFunctionReturn(0);
 }

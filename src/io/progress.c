@@ -19,7 +19,9 @@ PetscErrorCode progress_print(sim *s) {
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
   const double elapsed = MPI_Wtime() - s->loop_start_wtime;
   const double rate = particle_steps_per_second(s, elapsed);
-  const double eta = s->t > 0 ? elapsed * (s->t_end - s->t) / s->t : 0.0;
+  /* since this session's start (a restart begins at t > 0) */
+  const double done = s->t - s->io.restart_t;
+  const double eta = done > 0 ? elapsed * (s->t_end - s->t) / done : 0.0;
   PetscCall(PetscPrintf(s->comm,
                         "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e\n",
