@@ -33,7 +33,7 @@ def run(args, nx, ny, frac):
     out = os.path.join(args.work, f"{args.case}_{nx}x{ny}_dt{frac}")
     cmd = [args.dmhs, "-options_file", f"input/{args.case}.opts", "-channel_nx", str(nx), "-channel_ny", str(ny),
            "-sph_h", repr(h), "-dt", repr(dt), "-t_end", repr(args.t_end), "-quiet", "-output_dir", out,
-           "-output_interval", repr(args.t_end / 10)]
+           "-output_interval", repr(args.t_end / 10), "-output_snapshots", "false", "-checkpoint_at_end", "false"]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "error.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
