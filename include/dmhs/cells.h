@@ -13,6 +13,9 @@ typedef struct cells {
   PetscInt *order;  /* particle indices sorted by cell */
   PetscInt *cell_of;
   PetscInt n_alloc_cells, n_alloc_particles;
+  double (*xs)[DMHS_DIM];  /* positions in cell order (scratch) */
+  unsigned char *flag;     /* per sorted row: 1 = ghost, 2 = wall (scratch) */
+  PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
   PetscInt *pair_i, *pair_j;

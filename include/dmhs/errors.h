@@ -8,6 +8,7 @@
 #include <petscsys.h>
 
 struct sim;
+struct checkpoint_io;
 typedef double (*errors_exact_fn)(double y, double t, const void *ctx);
 
 #define ERRORS_MAX_REPORTS 16
@@ -30,6 +31,9 @@ PetscErrorCode errors_on_step(errors *e, struct sim *s);
 /* Prints the errors at the report times reached and the wall-clock time. */
 PetscErrorCode errors_report(errors *e, struct sim *s);
 PetscErrorCode errors_destroy(errors *e);
+/* Checkpoint hooks: the reports done so far; on restart error.csv is continued. */
+PetscErrorCode errors_checkpoint_write(errors *e, struct checkpoint_io *io);
+PetscErrorCode errors_checkpoint_read(errors *e, struct sim *s, struct checkpoint_io *io);
 /* Normalised RMS and max error over owned fluid particles, reduced over ranks. */
 PetscErrorCode errors_compute(errors *e, struct sim *s, double *l2, double *linf);
 

@@ -9,6 +9,7 @@ typedef struct dmhs_events {
   PetscLogEvent sph_density, sph_eos, sph_wall, sph_force, body_force;
   PetscLogEvent diagnostics, output, check_state;
   PetscLogEvent partition, halo_exchange; /* mpi: METIS; the MPI part of halo build/forward */
+  PetscLogEvent checkpoint;
 } dmhs_events;
 
 extern dmhs_events events;

@@ -7,6 +7,7 @@
 
 struct sim;
 struct dt_limits;
+struct checkpoint_io;
 
 enum { MODULE_NEEDS_PAIRS = 1u << 0, MODULE_NEEDS_BONDS = 1u << 1, MODULE_NEEDS_ANGLES = 1u << 2 };
 
@@ -24,6 +25,10 @@ struct module {
   PetscErrorCode (*view)(module *self, struct sim *s, PetscViewer viewer);
   PetscErrorCode (*destroy)(module *self);
   void *data;
+  /* Optional: save / restore private state a restart needs (random-number
+   * state, schedules ...) with checkpoint_put_* / checkpoint_get_* (checkpoint.h). */
+  PetscErrorCode (*checkpoint_write)(module *self, struct sim *s, struct checkpoint_io *io);
+  PetscErrorCode (*checkpoint_read)(module *self, struct sim *s, struct checkpoint_io *io);
 };
 
 #endif

@@ -4,6 +4,7 @@
 #include <petscsys.h>
 
 struct sim;
+struct checkpoint_io;
 
 typedef struct scene scene;
 struct scene {
@@ -17,6 +18,9 @@ struct scene {
   PetscErrorCode (*finish)(scene *self, struct sim *s);
   PetscErrorCode (*destroy)(scene *self);
   void *data;
+  /* Optional: save / restore the scene's diagnostics state (checkpoint.h). */
+  PetscErrorCode (*checkpoint_write)(scene *self, struct sim *s, struct checkpoint_io *io);
+  PetscErrorCode (*checkpoint_read)(scene *self, struct sim *s, struct checkpoint_io *io);
 };
 
 #endif

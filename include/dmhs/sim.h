@@ -12,6 +12,7 @@
 #include "dmhs/sph.h"
 #include "dmhs/partition.h" /* mpi */
 #include "dmhs/migrate.h"   /* mpi */
+#include "dmhs/io.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -55,6 +56,9 @@ typedef struct sim {
   /* timing */
   double loop_start_wtime, loop_seconds;
   PetscInt64 particle_steps; /* owned particles x steps, summed over ranks */
+
+  /* snapshots, checkpoints, restart, run.json (src/io/io.c) */
+  io_state io;
 } sim;
 
 PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only);

@@ -33,12 +33,15 @@ def run(args, nx, ny, frac):
     out = os.path.join(args.work, f"{args.case}_{nx}x{ny}_dt{frac}")
     cmd = [args.dmhs, "-options_file", f"input/{args.case}.opts", "-channel_nx", str(nx), "-channel_ny", str(ny),
            "-sph_h", repr(h), "-dt", repr(dt), "-t_end", repr(args.t_end), "-quiet", "-output_dir", out,
-           "-output_interval", repr(args.t_end / 10)]
+           "-output_interval", repr(args.t_end / 10), "-output_snapshots", "false", "-checkpoint_at_end", "false"]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "error.csv"), newline="") as f:
-        last = list(csv.DictReader(f))[-1]
+        rows = list(csv.DictReader(f))
+    last = rows[-1]
+    early = min(rows, key=lambda r: abs(float(r["t"]) - args.t_end / 10))
     return dict(nx=nx, ny=ny, dx=dx, dt=dt, frac=frac, l2=float(last["l2"]), linf=float(last["linf"]),
-                wall=float(last["wall_s"]), steps=int(last["step"]))
+                wall=float(last["wall_s"]), steps=int(last["step"]), l2_early=float(early["l2"]),
+                wall_early=float(early["wall_s"]))
 
 
 def main():
@@ -59,25 +62,29 @@ def main():
                   file=sys.stderr)
             results.append(r)
 
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for nx, ny in RESOLUTIONS:
-        rs = [r for r in results if r["nx"] == nx]
-        ax.loglog([r["wall"] for r in rs], [100 * r["l2"] for r in rs], "o-", label=f"{nx} x {ny}")
-        for r in rs:
-            ax.annotate(f"{r['frac']}", (r["wall"], 100 * r["l2"]), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
-    ax.set_xlabel("wall-clock of the step loop [s]")
-    ax.set_ylabel(f"L2 error at t = {args.t_end:g} s [% of v_ref]")
-    ax.set_title(f"{args.case}: error against run time (labels: dt / viscous limit)")
-    ax.legend()
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, key, wkey, t in ((axes[0], "l2_early", "wall_early", args.t_end / 10), (axes[1], "l2", "wall", args.t_end)):
+        for nx, ny in RESOLUTIONS:
+            rs = [r for r in results if r["nx"] == nx]
+            ax.loglog([r[wkey] for r in rs], [100 * r[key] for r in rs], "o-", label=f"{nx} x {ny}")
+            for r in rs:
+                ax.annotate(f"{r['frac']}", (r[wkey], 100 * r[key]), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
+        ax.set_xlabel(f"wall-clock to t = {t:g} s [s]")
+        ax.set_ylabel(f"L2 error at t = {t:g} s [% of v_ref]")
+        ax.legend()
+    fig.suptitle(f"{args.case}: error against run time (labels: dt / viscous limit)")
     fig.tight_layout()
     png = os.path.join(args.out, f"sweep_{args.case}.png")
     fig.savefig(png, dpi=120)
 
-    lines = ["| particles | dx [m] | dt [s] | dt / limit | steps | L2 [%] | Linf [%] | wall [s] |",
-             "|---|---|---|---|---|---|---|---|"]
+    te, tl = f"{args.t_end / 10:g}", f"{args.t_end:g}"
+    lines = [f"| particles | dx [m] | dt [s] | dt / limit | steps | L2 at {te} s [%] | wall to {te} s [s] | "
+             f"L2 at {tl} s [%] | Linf at {tl} s [%] | wall to {tl} s [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         lines.append(f"| {r['nx']} x {r['ny']} | {r['dx']:.3g} | {r['dt']:.3g} | {r['frac']} | {r['steps']} | "
+                     f"{100 * r['l2_early']:.4f} | {r['wall_early']:.2f} | "
                      f"{100 * r['l2']:.4f} | {100 * r['linf']:.4f} | {r['wall']:.2f} |")
     table = "\n".join(lines) + "\n"
     print(table)

@@ -13,6 +13,7 @@ PetscErrorCode cells_destroy(cells *c) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree3(c->start, c->order, c->cell_of));
   PetscCall(PetscFree2(c->pair_i, c->pair_j));
+  PetscCall(PetscFree2(c->xs, c->flag));
   PetscCall(PetscMemzero(c, sizeof(*c)));
   PetscFunctionReturn(0);
 }
@@ -97,36 +98,53 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
       }
   }
 
+  /* positions and flags gathered in cell order: the search below then walks
+   * contiguous memory instead of jumping through order[] */
+  if (n > c->n_alloc_sorted) {
+    PetscCall(PetscFree2(c->xs, c->flag));
+    c->n_alloc_sorted = n + n / 4;
+    PetscCall(PetscMalloc2(c->n_alloc_sorted, &c->xs, c->n_alloc_sorted, &c->flag));
+  }
+  const PetscInt n_owned = ps->n_owned;
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt i = c->order[a];
+    c->xs[a][0] = ps->x[i][0];
+    c->xs[a][1] = ps->x[i][1];
+    c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0);
+  }
+
   /* half stencil: each unordered pair of cells is visited once */
   static const int stencil[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
   const double cut2 = cutoff * cutoff;
-  const PetscInt n_owned = ps->n_owned;
+  const double(*restrict xs)[2] = (const double(*)[2])c->xs;
+  const unsigned char *restrict flag = c->flag;
   c->n_pairs = 0;
   for (PetscInt cy = 0; cy < c->n[1]; cy++) {
     for (PetscInt cx = 0; cx < c->n[0]; cx++) {
       const PetscInt cell = cy * c->n[0] + cx;
       for (PetscInt a = c->start[cell]; a < c->start[cell + 1]; a++) {
-        const PetscInt i = c->order[a];
-        for (int s = -1; s < 4; s++) {
+        const double xa = xs[a][0], ya = xs[a][1];
+        const unsigned fa = flag[a];
+        for (int st = -1; st < 4; st++) {
           PetscInt first, last;
-          if (s < 0) { /* own cell: later entries only */
+          if (st < 0) { /* own cell: later entries only */
             first = a + 1;
             last = c->start[cell + 1];
           } else {
-            const PetscInt nx = cx + stencil[s][0], ny = cy + stencil[s][1];
+            const PetscInt nx = cx + stencil[st][0], ny = cy + stencil[st][1];
             if (nx < 0 || nx >= c->n[0] || ny >= c->n[1]) continue;
             const PetscInt other = ny * c->n[0] + nx;
             first = c->start[other];
             last = c->start[other + 1];
           }
           for (PetscInt b = first; b < last; b++) {
-            const PetscInt j = c->order[b];
-            if (i >= n_owned && j >= n_owned) continue; /* nobody owns a ghost-ghost pair */
-            if (ps->type[i] == PTYPE_WALL && ps->type[j] == PTYPE_WALL) continue;
-            const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
+            const double dx = xa - xs[b][0], dy = ya - xs[b][1];
             if (dx * dx + dy * dy >= cut2) continue;
-            /* the owned (or lower) index first keeps sweeps' writes mostly on owned rows */
+            /* nobody owns a ghost-ghost pair; walls do not act on each other */
+            const unsigned both = fa & flag[b];
+            if (both) continue;
             if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
+            const PetscInt i = c->order[a], j = c->order[b];
             c->pair_i[c->n_pairs] = PetscMin(i, j);
             c->pair_j[c->n_pairs] = PetscMax(i, j);
             c->n_pairs++;

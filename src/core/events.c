@@ -25,5 +25,6 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("CheckState", id, &events.check_state));
   PetscCall(PetscLogEventRegister("Partition", id, &events.partition));
   PetscCall(PetscLogEventRegister("HaloExchange", id, &events.halo_exchange));
+  PetscCall(PetscLogEventRegister("Checkpoint", id, &events.checkpoint));
   PetscFunctionReturn(0);
 }

@@ -24,7 +24,8 @@ static const field_desc table[] = {
     ROW(mass, 1, FIELD_REAL, ALL, "kg"),
     ROW(rho, 1, FIELD_REAL, ALL, "kg/m^3"),
     ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "kg/m^3/s"),
-    ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_OUTPUT, "Pa"),
+    /* p is recomputed before use; checkpointed so a restarted state is complete */
+    ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT, "Pa"),
 };
 
 const field_desc *fields_table(size_t *count) {

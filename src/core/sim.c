@@ -187,6 +187,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(migrate_set_from_options(&s->mig, s));
   PetscCall(halo_check_set_from_options(s));
   PetscCall(dump_set_from_options(s));
+  PetscCall(io_set_from_options(s)); /* io: snapshots, checkpoints, -restart */
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   *help_only = help;
   if (help) {
@@ -202,6 +203,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(sim_check_unused_options(s));
 
   PetscCall(sim_prepare_output_dir(s));
+  PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(s->scn->build(s->scn, s));
   double reach = 0;
   for (int m = 0; m < s->n_modules; m++) {
@@ -224,6 +226,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(sim_rebuild_neighbours(s));
   PetscCall(sim_compute_forces(s));
   PetscCall(integrate_check_state(s));
+  PetscCall(io_restart(s)); /* io: with -restart, the checkpoint's state replaces the built one */
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -233,9 +236,13 @@ PetscErrorCode sim_run(sim *s) {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscLogStagePush(events.stage_steps));
-  PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-  if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
-  PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+  /* io: a restarted run already diagnosed and wrote out this state */
+  if (!s->io.restarted) {
+    PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
+    if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
+    PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+    PetscCall(io_output(s));
+  }
   s->loop_start_wtime = MPI_Wtime();
   /* stop at the step nearest t_end */
   while (s->t < s->t_end - 0.5 * s->dt) {
@@ -251,11 +258,17 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
     if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
-    if (s->t >= s->next_output_t - 0.5 * s->dt) s->next_output_t += s->output_interval;
+    if (s->t >= s->next_output_t - 0.5 * s->dt) {
+      PetscCall(io_output(s)); /* io: snapshot + XDMF */
+      s->next_output_t += s->output_interval;
+    }
     if (s->t >= s->next_progress_t - 0.5 * s->dt) {
       if (!s->quiet) PetscCall(progress_print(s));
       s->next_progress_t += s->progress_interval;
     }
+    PetscBool stop; /* io: checkpoint at the interval; on SIGTERM/SIGUSR1 also stop */
+    PetscCall(io_after_step(s, &stop));
+    if (stop) break;
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
   PetscCall(PetscLogStagePop());
@@ -263,6 +276,7 @@ PetscErrorCode sim_run(sim *s) {
   PetscCall(progress_summary(s));
   PetscCall(dump_final(s)); /* mpi */
   PetscCall(migrate_report(&s->mig, s)); /* mpi */
+  PetscCall(io_finish(s)); /* io: final checkpoint, run.json */
   PetscFunctionReturn(0);
 }
 
@@ -278,6 +292,7 @@ PetscErrorCode sim_destroy(sim **sp) {
     if (s->scn->destroy) PetscCall(s->scn->destroy(s->scn));
     PetscCall(PetscFree(s->scn));
   }
+  PetscCall(io_destroy(s));
   PetscCall(halo_destroy(&s->hal));
   PetscCall(partition_destroy(&s->part)); /* mpi */
   PetscCall(cells_destroy(&s->cel));

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/errors.h"
+#include "dmhs/checkpoint.h"
 
 PetscErrorCode errors_set_from_options(errors *e, sim *s) {
   PetscInt n = ERRORS_MAX_REPORTS;
@@ -47,15 +48,19 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
   e->v_ref = v_ref;
   e->next_report = 0;
   if (s->rank == 0) {
+    /* a restart continues the file (errors_checkpoint_read drops rows past the checkpoint) */
+    const PetscBool append = s->io.restart_file[0] ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
-    e->csv = fopen(path, "w");
+    e->csv = fopen(path, append ? "a" : "w");
     PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
-    PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "cannot write %s", path);
-    /* profiles of an earlier run in this directory would pass for this run's */
-    for (PetscInt k = 0; k < e->n_reports; k++) {
-      PetscCall(errors_profile_path(s, e->report_t[k], path, sizeof(path)));
-      (void)remove(path); /* absent is fine */
+    if (!append) {
+      PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+                 "cannot write %s", path);
+      /* profiles of an earlier run in this directory would pass for this run's */
+      for (PetscInt k = 0; k < e->n_reports; k++) {
+        PetscCall(errors_profile_path(s, e->report_t[k], path, sizeof(path)));
+        (void)remove(path); /* absent is fine */
+      }
     }
   }
   PetscFunctionReturn(0);
@@ -165,6 +170,64 @@ PetscErrorCode errors_report(errors *e, sim *s) {
   for (PetscInt k = e->next_report; k < e->n_reports; k++)
     PetscCall(PetscPrintf(s->comm, "  %10.4g  (not reached: t_end = %g s)\n", e->report_t[k], s->t_end));
   PetscCall(PetscPrintf(s->comm, "  wall-clock of the step loop: %.3f s\n", s->loop_seconds));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_checkpoint_write(errors *e, checkpoint_io *io) {
+  const PetscInt64 next = e->next_report;
+  PetscFunctionBeginUser;
+  PetscCall(checkpoint_put_ints(io, "errors_next_report", &next, 1));
+  PetscCall(checkpoint_put_reals(io, "errors_reached_t", e->reached_t, e->next_report));
+  PetscCall(checkpoint_put_reals(io, "errors_l2", e->l2, e->next_report));
+  PetscCall(checkpoint_put_reals(io, "errors_linf", e->linf, e->next_report));
+  PetscCall(checkpoint_put_reals(io, "errors_wall_s", e->wall_s, e->next_report));
+  PetscFunctionReturn(0);
+}
+
+/* error.csv keeps its header and the rows up to the checkpoint's step: rows the
+ * interrupted run wrote after the checkpoint are written again as the run continues. */
+static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
+  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8], line[512];
+  PetscFunctionBeginUser;
+  PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing %s failed", path);
+  e->csv = NULL;
+  FILE *in = fopen(path, "r"), *out = fopen(tmp, "w");
+  PetscCheck(in && out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot rewrite %s: %s", path, strerror(errno));
+  int ok = 1, first = 1;
+  while (ok && fgets(line, sizeof(line), in)) {
+    long long step;
+    const int keep = first ? 1 : sscanf(line, "%lld,", &step) == 1 && step <= (long long)s->step;
+    if (first && strncmp(line, "step,", 5)) ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
+    if (keep) ok = ok && fputs(line, out) >= 0;
+    first = 0;
+  }
+  if (first) ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
+  fclose(in);
+  ok = (fclose(out) == 0) && ok;
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
+             path, strerror(errno));
+  e->csv = fopen(path, "a");
+  PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_checkpoint_read(errors *e, sim *s, checkpoint_io *io) {
+  PetscInt64 next;
+  PetscFunctionBeginUser;
+  PetscCall(checkpoint_get_ints(io, "errors_next_report", &next, 1));
+  PetscCheck(next >= 0 && next <= e->n_reports, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "the checkpoint has %" PetscInt64_FMT " error reports done but -error_report_times lists %" PetscInt_FMT
+             ": restart with the same -error_report_times",
+             next, e->n_reports);
+  e->next_report = (PetscInt)next;
+  PetscCall(checkpoint_get_reals(io, "errors_reached_t", e->reached_t, e->next_report));
+  PetscCall(checkpoint_get_reals(io, "errors_l2", e->l2, e->next_report));
+  PetscCall(checkpoint_get_reals(io, "errors_linf", e->linf, e->next_report));
+  PetscCall(checkpoint_get_reals(io, "errors_wall_s", e->wall_s, e->next_report));
+  if (s->rank == 0) PetscCall(errors_csv_truncate(e, s));
   PetscFunctionReturn(0);
 }
 

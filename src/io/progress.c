@@ -20,7 +20,9 @@ PetscErrorCode progress_print(sim *s) {
   PetscCall(partition_measure_imbalance(&s->part, s)); /* mpi: max/mean owned over ranks */
   const double elapsed = MPI_Wtime() - s->loop_start_wtime;
   const double rate = particle_steps_per_second(s, elapsed);
-  const double eta = s->t > 0 ? elapsed * (s->t_end - s->t) / s->t : 0.0;
+  /* since this session's start (a restart begins at t > 0) */
+  const double done = s->t - s->io.restart_t;
+  const double eta = done > 0 ? elapsed * (s->t_end - s->t) / done : 0.0;
   PetscCall(PetscPrintf(s->comm,
                         "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",

@@ -11,6 +11,7 @@ const char *const sph_density_names[] = {"continuity", "summation", "sph_density
 
 typedef struct {
   sph_wall_work *wall;
+  sph_force_work force;
   PetscBool has_walls; /* any wall particle on any rank: else the wall pass is skipped */
 } sph_data;
 
@@ -62,7 +63,7 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
   PetscCall(sph_eos_compute(s));
   if (d->has_walls) PetscCall(sph_wall_compute(s, d->wall));
   else PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
-  PetscCall(sph_force_compute(s));
+  PetscCall(sph_force_compute(s, &d->force));
   PetscFunctionReturn(0);
 }
 
@@ -100,6 +101,7 @@ static PetscErrorCode sph_destroy(module *self) {
   sph_data *d = self->data;
   PetscFunctionBeginUser;
   PetscCall(sph_wall_destroy(&d->wall));
+  PetscCall(PetscFree2(d->force.P, d->force.inv_rho));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }

@@ -11,16 +11,16 @@ SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
   const double *restrict mass = ps->mass;
   double *restrict rho = ps->rho;
-  const double h = s->sph.h;
+  const double inv_h = 1.0 / s->sph.h;
   double w0, dw0;
-  sph_kernel_eval(kernel, 2, norm, h, 0.0, &w0, &dw0);
+  sph_kernel_eval(kernel, 2, norm, inv_h, 0.0, &w0, &dw0);
   for (PetscInt i = 0; i < ps->n_owned + ps->n_ghost; i++)
     if (ps->type[i] != PTYPE_WALL) rho[i] = mass[i] * w0;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];
     double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, h, sqrt(dx * dx + dy * dy), &w, &dwdr);
+    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(dx * dx + dy * dy), &w, &dwdr);
     /* wall rows are overwritten by the wall pass; ghost rows are refreshed below */
     rho[i] += mass[j] * w;
     rho[j] += mass[i] * w;

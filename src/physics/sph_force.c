@@ -13,10 +13,11 @@ typedef struct {
   PetscInt n_pairs;
   const PetscInt *restrict pi, *restrict pj;
   const double (*restrict x)[2], (*restrict v_est)[2], (*restrict v_visc)[2];
-  const double *restrict mass, *restrict rho, *restrict p;
+  const double *restrict mass, *restrict rho;
+  const double *restrict P, *restrict inv_rho; /* p/rho^2 and 1/rho per particle */
   double (*restrict a)[2];
   double *restrict drho;
-  double h, norm, mu_sum, alpha, beta, c0;
+  double h, inv_h, norm, mu_sum, alpha, beta, c0;
 } force_args;
 
 SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artificial,
@@ -24,19 +25,20 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
   const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
   const double(*restrict x)[2] = A->x, (*restrict v_est)[2] = A->v_est,
         (*restrict v_visc)[2] = A->v_visc;
-  const double *restrict mass = A->mass, *restrict rho = A->rho, *restrict p = A->p;
+  const double *restrict mass = A->mass, *restrict rho = A->rho;
+  const double *restrict P = A->P, *restrict inv_rho = A->inv_rho;
   double(*restrict a)[2] = A->a;
   double *restrict drho = A->drho;
-  const double h = A->h, norm = A->norm, mu_sum = A->mu_sum;
+  const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double rij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r = sqrt(rij[0] * rij[0] + rij[1] * rij[1]);
     double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, h, r, &w, &dwdr);
+    sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
     double T[2];
-    sph_force_iact(rij, r, dwdr, rho[i], rho[j], p[i], p[j], vvisc, mu_sum, T);
+    sph_force_iact(rij, r, dwdr, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
     if (artificial || continuity) {
       const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
       if (artificial)
@@ -79,13 +81,23 @@ static void (*const sweeps[3][2][2])(const force_args *) = {
     {{sweep_wendland, sweep_wendland_av}, {sweep_wendland_c, sweep_wendland_c_av}},
 };
 
-PetscErrorCode sph_force_compute(sim *s) {
+PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
   particles *ps = &s->ps;
   const sph_params *sp = &s->sph;
   const int continuity = sp->density == SPH_DENSITY_CONTINUITY;
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_force, 0, 0, 0, 0));
+  const PetscInt n = ps->n_owned + ps->n_ghost;
+  if (n > work->n_alloc) {
+    PetscCall(PetscFree2(work->P, work->inv_rho));
+    work->n_alloc = n + n / 4;
+    PetscCall(PetscMalloc2(work->n_alloc, &work->P, work->n_alloc, &work->inv_rho));
+  }
+  for (PetscInt i = 0; i < n; i++) {
+    work->inv_rho[i] = 1.0 / ps->rho[i];
+    work->P[i] = ps->p[i] * work->inv_rho[i] * work->inv_rho[i];
+  }
   const force_args A = {
       .n_pairs = s->cel.n_pairs,
       .pi = s->cel.pair_i,
@@ -95,10 +107,12 @@ PetscErrorCode sph_force_compute(sim *s) {
       .v_visc = (const double(*)[2])ps->v_visc,
       .mass = ps->mass,
       .rho = ps->rho,
-      .p = ps->p,
+      .P = work->P,
+      .inv_rho = work->inv_rho,
       .a = ps->a,
       .drho = ps->drho,
       .h = sp->h,
+      .inv_h = 1.0 / sp->h,
       .norm = sph_kernel_norm(sp->kernel, 2, sp->h),
       /* mu_i + mu_j with one liquid of dynamic viscosity rho0 nu */
       .mu_sum = 2.0 * sp->rho0 * sp->nu,
@@ -107,7 +121,7 @@ PetscErrorCode sph_force_compute(sim *s) {
       .c0 = sp->c0,
   };
   sweeps[sp->kernel][continuity][artificial](&A);
-  PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs));
+  PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs + 4.0 * (double)n));
   PetscCall(PetscLogEventEnd(events.sph_force, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

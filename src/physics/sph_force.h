@@ -3,8 +3,13 @@
 #define DMHS_SPH_INTERNAL_H
 #include "dmhs/sim.h"
 
-/* sph_force.c: momentum (and continuity) sweep over the pair list */
-PetscErrorCode sph_force_compute(sim *s);
+/* sph_force.c: momentum (and continuity) sweep over the pair list; the work
+ * arrays hold per-particle p/rho^2 and 1/rho (owned and ghost rows) */
+typedef struct {
+  PetscInt n_alloc;
+  double *P, *inv_rho;
+} sph_force_work;
+PetscErrorCode sph_force_compute(sim *s, sph_force_work *work);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
 PetscErrorCode sph_density_summation(sim *s);
 /* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */

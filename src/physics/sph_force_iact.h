@@ -17,12 +17,17 @@
 #define DMHS_SPH_FORCE_IACT_H
 #include "sph_kernel.h"
 
-SPH_INLINE void sph_force_iact(const double rij[2], double r, double dwdr, double rho_i,
-                               double rho_j, double p_i, double p_j, const double vvisc_ij[2],
+/* P = p / rho^2 and 1/rho are per-particle values computed once before the
+ * pair loop (sph_force.c), so a pair costs one division (1/r). */
+SPH_INLINE void sph_force_iact(const double rij[2], double r, double dwdr, double P_i, double P_j,
+                               double inv_rho_i, double inv_rho_j, const double vvisc_ij[2],
                                double mu_sum, double T[2]) {
   const double grad = dwdr / r; /* grad_i W = grad * r_ij */
-  const double press = -(p_i / (rho_i * rho_i) + p_j / (rho_j * rho_j));
-  const double visc = mu_sum / (rho_i * rho_j) * grad;
+  const double press = -(P_i + P_j);
+  /* (inv_rho_i * inv_rho_j) first: the product is then symmetric in i, j bit for
+   * bit, so T(j, i) == -T(i, j) exactly and sums do not depend on which of the
+   * two is listed first (rank-count invariance, doc/parallel.md) */
+  const double visc = mu_sum * (inv_rho_i * inv_rho_j) * grad;
   T[0] = press * grad * rij[0] + visc * vvisc_ij[0];
   T[1] = press * grad * rij[1] + visc * vvisc_ij[1];
 }

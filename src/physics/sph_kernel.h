@@ -33,10 +33,11 @@ SPH_INLINE double sph_kernel_norm(sph_kernel_kind kind, int dim, double h) {
   return 0.0;
 }
 
-/* W(r) and dW/dr for r < h (callers only pass pairs inside the support; r >= h gives 0). */
-SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, double h, double r,
+/* W(r) and dW/dr for r < h (r >= h gives 0). Takes 1/h: the hot loops then
+ * multiply instead of divide. */
+SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, double inv_h, double r,
                                 double *w, double *dwdr) {
-  const double q = r / h;
+  const double q = r * inv_h;
   if (q >= 1.0) {
     *w = 0.0;
     *dwdr = 0.0;
@@ -46,27 +47,27 @@ SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, doub
   switch (kind) {
   case SPH_KERNEL_LUCY:
     *w = norm * (1.0 + 3.0 * q) * m * m * m;
-    *dwdr = -12.0 * norm * q * m * m / h;
+    *dwdr = -12.0 * norm * q * m * m * inv_h;
     return;
   case SPH_KERNEL_CUBIC: {
     const double u = 2.0 * q; /* r / s with s = h/2; d/dr = (2/h) d/du */
     if (u < 1.0) {
       *w = norm * (1.0 - 1.5 * u * u + 0.75 * u * u * u);
-      *dwdr = norm * (-3.0 * u + 2.25 * u * u) * 2.0 / h;
+      *dwdr = norm * (-3.0 * u + 2.25 * u * u) * 2.0 * inv_h;
     } else {
       const double v = 2.0 - u;
       *w = norm * 0.25 * v * v * v;
-      *dwdr = -norm * 0.75 * v * v * 2.0 / h;
+      *dwdr = -norm * 0.75 * v * v * 2.0 * inv_h;
     }
     return;
   }
   case SPH_KERNEL_WENDLAND:
     if (dim == 1) {
       *w = norm * (1.0 + 3.0 * q) * m * m * m;
-      *dwdr = -12.0 * norm * q * m * m / h;
+      *dwdr = -12.0 * norm * q * m * m * inv_h;
     } else {
       *w = norm * (1.0 + 4.0 * q) * m * m * m * m;
-      *dwdr = -20.0 * norm * q * m * m * m / h;
+      *dwdr = -20.0 * norm * q * m * m * m * inv_h;
     }
     return;
   }

@@ -44,7 +44,7 @@ PetscErrorCode sph_wall_destroy(sph_wall_work **w) {
 
 SPH_INLINE void wall_sums(sph_kernel_kind kernel, sim *s, sph_wall_work *W) {
   const particles *ps = &s->ps;
-  const double norm = sph_kernel_norm(kernel, 2, s->sph.h), h = s->sph.h;
+  const double norm = sph_kernel_norm(kernel, 2, s->sph.h), inv_h = 1.0 / s->sph.h;
   const PetscInt *restrict pi = s->cel.pair_i, *restrict pj = s->cel.pair_j;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     PetscInt wl = pi[k], f = pj[k];
@@ -56,7 +56,7 @@ SPH_INLINE void wall_sums(sph_kernel_kind kernel, sim *s, sph_wall_work *W) {
     }
     const double r_wf[2] = {ps->x[wl][0] - ps->x[f][0], ps->x[wl][1] - ps->x[f][1]};
     double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, h, sqrt(r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1]), &w, &dwdr);
+    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1]), &w, &dwdr);
     W->sum_w[wl] += w;
     W->sum_v[wl][0] += ps->v_est[f][0] * w;
     W->sum_v[wl][1] += ps->v_est[f][1] * w;

@@ -125,6 +125,21 @@ static PetscErrorCode channel_finish(scene *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode channel_checkpoint_write(scene *self, sim *s, struct checkpoint_io *io) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(errors_checkpoint_write(&c->err, io));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode channel_checkpoint_read(scene *self, sim *s, struct checkpoint_io *io) {
+  channel_data *c = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(errors_checkpoint_read(&c->err, s, io));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode channel_destroy(scene *self) {
   channel_data *c = self->data;
   PetscFunctionBeginUser;
@@ -150,6 +165,8 @@ PetscErrorCode channel_scene_create(channel_flow flow, scene **out) {
   (*out)->diagnose = channel_diagnose;
   (*out)->finish = channel_finish;
   (*out)->destroy = channel_destroy;
+  (*out)->checkpoint_write = channel_checkpoint_write;
+  (*out)->checkpoint_read = channel_checkpoint_read;
   (*out)->data = c;
   PetscFunctionReturn(0);
 }

@@ -13,7 +13,7 @@ static const double h = 0.37; /* not 1, so that a wrong power of h shows */
 
 static double W(sph_kernel_kind k, int dim, double r) {
   double w = 0, dw = 0;
-  sph_kernel_eval(k, dim, sph_kernel_norm(k, dim, h), h, r, &w, &dw);
+  sph_kernel_eval(k, dim, sph_kernel_norm(k, dim, h), 1.0 / h, r, &w, &dw);
   return w;
 }
 
@@ -52,7 +52,7 @@ static void test_gradient_matches_finite_difference(void **state) {
       for (int i = 0; i < 100; i++) {
         const double r = (i + 0.5) / 100.0 * h; /* never within d of the knot h/2 */
         double w = 0, dwdr = 0;
-        sph_kernel_eval(kinds[ik], dim, norm, h, r, &w, &dwdr);
+        sph_kernel_eval(kinds[ik], dim, norm, 1.0 / h, r, &w, &dwdr);
         const double fd = (W(kinds[ik], dim, r + d) - W(kinds[ik], dim, r - d)) / (2.0 * d);
         if (fabs(dwdr - fd) > 1e-7 * norm / h)
           fail_msg("%s %dD r/h = %g: dW/dr = %.12g, finite difference %.12g", kind_name[ik], dim,
@@ -68,14 +68,14 @@ static void test_zero_outside_support(void **state) {
     for (int dim = 1; dim <= 3; dim++)
       for (size_t i = 0; i < sizeof(radii) / sizeof(radii[0]); i++) {
         double w = -1, dwdr = -1;
-        sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), h, radii[i], &w, &dwdr);
+        sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, radii[i], &w, &dwdr);
         assert_true(w == 0.0 && dwdr == 0.0);
       }
   /* ... and positive, decreasing just inside it */
   for (int ik = 0; ik < 3; ik++)
     for (int dim = 1; dim <= 3; dim++) {
       double w = 0, dwdr = 0;
-      sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), h, 0.99 * h, &w, &dwdr);
+      sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, 0.99 * h, &w, &dwdr);
       assert_true(w > 0.0 && dwdr < 0.0);
     }
 }
@@ -86,8 +86,8 @@ static void test_cubic_continuous_at_knot(void **state) {
   for (int dim = 1; dim <= 3; dim++) {
     const double norm = sph_kernel_norm(SPH_KERNEL_CUBIC, dim, h);
     double w_in = 0, dw_in = 0, w_out = 0, dw_out = 0;
-    sph_kernel_eval(SPH_KERNEL_CUBIC, dim, norm, h, knot - e, &w_in, &dw_in);
-    sph_kernel_eval(SPH_KERNEL_CUBIC, dim, norm, h, knot + e, &w_out, &dw_out);
+    sph_kernel_eval(SPH_KERNEL_CUBIC, dim, norm, 1.0 / h, knot - e, &w_in, &dw_in);
+    sph_kernel_eval(SPH_KERNEL_CUBIC, dim, norm, 1.0 / h, knot + e, &w_out, &dw_out);
     assert_close(w_in, w_out, 1e-8 * norm);
     assert_close(dw_in, dw_out, 1e-8 * norm / h);
     /* at the knot u = 1 both pieces give W = norm / 4 */

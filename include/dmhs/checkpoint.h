@@ -1,0 +1,39 @@
+/* Checkpoints (src/io/checkpoint.c): the whole state needed to continue a run
+ * bitwise, in one HDF5 file written collectively and atomically (<file>.tmp,
+ * then rename: a failed write leaves the previous checkpoint intact).
+ *   attributes of /:   magic "DMHS-CHECKPOINT", format_version, dmhs_version,
+ *                      scene, options, n_ranks, n_particles, step, t, dt,
+ *                      next_output_t, next_progress_t, body_accel, snapshot_index
+ *   /particles/<field> every FIELD_CHECKPOINT field at its native width
+ *   /particles/rank_counts  owned particles per rank when written
+ *   /modules/<name>/   private state of modules with checkpoint hooks
+ *   /scene/            private state of the scene (e.g. error reports done)
+ * Module and scene state is replicated (the same on every rank): hooks store
+ * named arrays with checkpoint_put_* and read them back with checkpoint_get_*. */
+#ifndef DMHS_CHECKPOINT_H
+#define DMHS_CHECKPOINT_H
+#include <petscsys.h>
+
+struct sim;
+
+#define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
+#define CHECKPOINT_FORMAT_VERSION 1
+
+/* Opaque handle given to the modules' and scene's checkpoint hooks. */
+typedef struct checkpoint_io checkpoint_io;
+
+PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v, PetscInt n);
+PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n);
+/* n must match what was stored; checkpoint_get_length tells it (-1 = absent). */
+PetscErrorCode checkpoint_get_length(checkpoint_io *io, const char *name, PetscInt *n);
+PetscErrorCode checkpoint_get_reals(checkpoint_io *io, const char *name, double *v, PetscInt n);
+PetscErrorCode checkpoint_get_ints(checkpoint_io *io, const char *name, PetscInt64 *v, PetscInt n);
+
+/* Writes the current state to path atomically. Collective. */
+PetscErrorCode checkpoint_write(struct sim *s, const char *path);
+/* Replaces the particle state, run control and module / scene state by path's.
+ * The scene must already be built with the same options (same particle count).
+ * Ghosts are dropped; the caller rebuilds them. Collective. */
+PetscErrorCode checkpoint_read(struct sim *s, const char *path);
+
+#endif

@@ -1,0 +1,51 @@
+/* Output, checkpoints, restart and the run record (src/io/io.c): the glue the
+ * step loop calls. Options (-output_snapshots, -checkpoint_interval,
+ * -checkpoint_at_end, -restart) are read in one options pass; snapshots and
+ * the XDMF index are written at every output time, checkpoints at an interval,
+ * at the end and when SIGTERM / SIGUSR1 arrives; <output_dir>/run.json records
+ * version, options, rank count, start/end time and the exit status. */
+#ifndef DMHS_IO_H
+#define DMHS_IO_H
+#include <petscsys.h>
+
+struct sim;
+struct xdmf;
+
+typedef struct io_state {
+  /* options */
+  PetscBool snapshots;                   /* -output_snapshots */
+  double checkpoint_interval;            /* -checkpoint_interval [s], 0 = never */
+  PetscBool checkpoint_at_end;           /* -checkpoint_at_end */
+  char restart_file[PETSC_MAX_PATH_LEN]; /* -restart, "" = fresh start */
+  /* state */
+  PetscBool restarted;   /* the state was read from restart_file */
+  double restart_t;      /* t when this session's step loop started [s] */
+  PetscInt snapshot_index;    /* number of the next snapshot file */
+  double next_checkpoint_t;   /* [s] */
+  PetscInt last_checkpoint_step; /* -1 = none written by this session */
+  int stop_signal;            /* signal that stopped the run, 0 = none */
+  struct xdmf *xdmf;          /* rank 0: the snapshots indexed so far */
+  char *options;              /* resolved options (PetscOptionsGetAll) */
+  char start_time[32];        /* ISO 8601, UTC */
+  PetscBool run_json_started;
+} io_state;
+
+/* Options pass; also called for -help. Must run before the scene is built. */
+PetscErrorCode io_set_from_options(struct sim *s);
+/* After the output directory exists: run.json ("running"), signal handlers. */
+PetscErrorCode io_setup(struct sim *s);
+/* With -restart: replaces the particle state, step, t, dt and module state by the
+ * checkpoint's, then rebuilds ghosts and pairs (no force evaluation: the next
+ * kick uses the restored a and drho). No-op otherwise. */
+PetscErrorCode io_restart(struct sim *s);
+/* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false. */
+PetscErrorCode io_output(struct sim *s);
+/* After every step: checkpoint at the interval or on a signal; *stop on a signal. */
+PetscErrorCode io_after_step(struct sim *s, PetscBool *stop);
+/* After the loop: final checkpoint (-checkpoint_at_end), run.json with the exit status. */
+PetscErrorCode io_finish(struct sim *s);
+PetscErrorCode io_destroy(struct sim *s);
+/* Error path (best effort, never fails): run.json gets status "error" and the message. */
+void io_record_error(struct sim *s, const char *message);
+
+#endif

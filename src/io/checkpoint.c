@@ -1,0 +1,270 @@
+/* Checkpoints: write and read the whole state (layout in checkpoint.h).
+ *
+ * What "the whole state" is, for a bitwise restart of kick-drift-kick:
+ *   - every FIELD_CHECKPOINT field of owned particles, in their current row
+ *     order (the pair list and so every sum is built in that order): gid, type,
+ *     tag, x, v, a, x0, mass, rho, drho, p. a and drho feed the first kick
+ *     after the restart; v_est is derived from v and a in that kick, v_visc and
+ *     ghosts are rebuilt before the next force sweep.
+ *   - run control: step, t, dt (t = step * dt is recomputed identically),
+ *     next output / progress times, the snapshot counter, and body_accel (the
+ *     wall pass reads the body acceleration left by the previous sweep).
+ *   - modules' and the scene's private state through their checkpoint hooks.
+ * Reading validates before it changes anything it cannot restore: magic,
+ * format version, scene, particle count, and each dataset's shape and type. */
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/checkpoint.h"
+#include "dmhs/events.h"
+#include "h5check.h"
+#include "h5io.h"
+
+struct checkpoint_io {
+  MPI_Comm comm;
+  PetscMPIInt rank;
+  const char *path;
+  hid_t group;
+  const char *owner; /* "module <name>" or "scene" */
+};
+
+static field_desc checkpoint_array_desc(const char *name, field_kind kind) {
+  field_desc d = {name, 1, kind, 0, 0, "1"};
+  return d;
+}
+
+PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v, PetscInt n) {
+  const field_desc d = checkpoint_array_desc(name, FIELD_REAL);
+  PetscFunctionBeginUser;
+  /* replicated state: rank 0's copy is written */
+  PetscCall(h5io_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n, 1));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n) {
+  const field_desc d = checkpoint_array_desc(name, FIELD_INT64);
+  PetscFunctionBeginUser;
+  PetscCall(h5io_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n, 1));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkpoint_get_length(checkpoint_io *io, const char *name, PetscInt *n) {
+  htri_t exists;
+  hid_t dset, space;
+  hssize_t count;
+  PetscFunctionBeginUser;
+  PetscCallHDF5(io->path, exists = H5Lexists(io->group, name, H5P_DEFAULT));
+  *n = -1;
+  if (exists <= 0) PetscFunctionReturn(0);
+  PetscCallHDF5(io->path, dset = H5Dopen2(io->group, name, H5P_DEFAULT));
+  PetscCallHDF5(io->path, space = H5Dget_space(dset));
+  PetscCallHDF5(io->path, count = H5Sget_simple_extent_npoints(space));
+  PetscCallHDF5(io->path, H5Sclose(space));
+  PetscCallHDF5(io->path, H5Dclose(dset));
+  *n = (PetscInt)count;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode checkpoint_get(checkpoint_io *io, const char *name, field_kind kind, void *v, PetscInt n) {
+  const field_desc d = checkpoint_array_desc(name, kind);
+  PetscInt stored;
+  PetscFunctionBeginUser;
+  PetscCall(checkpoint_get_length(io, name, &stored));
+  PetscCheck(stored >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s lacks '%s' of %s (truncated, or written by another version)", io->path, name, io->owner);
+  PetscCheck(stored == n, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: '%s' of %s has %" PetscInt_FMT " values, expected %" PetscInt_FMT, io->path, name,
+             io->owner, stored, n);
+  PetscCall(h5io_read_rows(io->comm, io->path, io->group, &d, v, n, 0, n));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkpoint_get_reals(checkpoint_io *io, const char *name, double *v, PetscInt n) {
+  return checkpoint_get(io, name, FIELD_REAL, v, n);
+}
+
+PetscErrorCode checkpoint_get_ints(checkpoint_io *io, const char *name, PetscInt64 *v, PetscInt n) {
+  return checkpoint_get(io, name, FIELD_INT64, v, n);
+}
+
+PetscErrorCode checkpoint_write(sim *s, const char *path) {
+  char tmp[PETSC_MAX_PATH_LEN + 8];
+  size_t nf;
+  const field_desc *t = fields_table(&nf);
+  const field_desc counts_desc = checkpoint_array_desc("rank_counts", FIELD_INT64);
+  PetscInt64 offset, n, my_count = s->ps.n_owned;
+  hid_t fid, grp;
+  checkpoint_io io = {s->comm, s->rank, tmp, -1, NULL};
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.checkpoint, 0, 0, 0, 0));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
+  PetscCall(h5io_create(s->comm, tmp, &fid));
+  {
+    const PetscInt64 version = CHECKPOINT_FORMAT_VERSION, ranks = s->size, step = s->step,
+                     snapshot_index = s->io.snapshot_index;
+    PetscCall(h5io_put_string(tmp, fid, "magic", CHECKPOINT_MAGIC));
+    PetscCall(h5io_put_int64s(tmp, fid, "format_version", &version, 1));
+    PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
+    PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
+    PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    PetscCall(h5io_put_int64s(tmp, fid, "n_ranks", &ranks, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "n_particles", &n, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "step", &step, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "snapshot_index", &snapshot_index, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "t", &s->t, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "dt", &s->dt, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "body_accel", s->body_accel, DMHS_DIM));
+  }
+  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  for (size_t k = 0; k < nf; k++) {
+    if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
+    PetscCall(h5io_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]), s->ps.n_owned, offset, n,
+                              t[k].width));
+  }
+  PetscCall(h5io_write_rows(s->comm, tmp, grp, &counts_desc, &my_count, 1, s->rank, s->size, 1));
+  PetscCallHDF5(tmp, H5Gclose(grp));
+
+  /* private state of modules and scene */
+  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "modules", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  for (int m = 0; m < s->n_modules; m++) {
+    module *mod = s->modules[m];
+    char owner[80];
+    if (!mod->checkpoint_write) continue;
+    PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
+    io.owner = owner;
+    PetscCallHDF5(tmp, io.group = H5Gcreate2(grp, mod->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCall(mod->checkpoint_write(mod, s, &io));
+    PetscCallHDF5(tmp, H5Gclose(io.group));
+  }
+  PetscCallHDF5(tmp, H5Gclose(grp));
+  if (s->scn->checkpoint_write) {
+    io.owner = "the scene";
+    PetscCallHDF5(tmp, io.group = H5Gcreate2(fid, "scene", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCall(s->scn->checkpoint_write(s->scn, s, &io));
+    PetscCallHDF5(tmp, H5Gclose(io.group));
+  }
+  PetscCall(h5io_close(tmp, &fid));
+  PetscCall(h5io_commit(s->comm, tmp, path));
+  PetscCall(PetscLogEventEnd(events.checkpoint, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Opens group `name` under loc, or fails naming what is missing. */
+static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const char *name, const char *what,
+                                            hid_t *grp) {
+  htri_t exists;
+  PetscFunctionBeginUser;
+  PetscCallHDF5(path, exists = H5Lexists(loc, name, H5P_DEFAULT));
+  PetscCheck(exists > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s lacks the group '%s' (%s): truncated, or written by another scene or version", path, name,
+             what);
+  PetscCallHDF5(path, *grp = H5Gopen2(loc, name, H5P_DEFAULT));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkpoint_read(sim *s, const char *path) {
+  char text[256];
+  size_t nf;
+  const field_desc *t = fields_table(&nf);
+  const field_desc counts_desc = checkpoint_array_desc("rank_counts", FIELD_INT64);
+  PetscInt64 version, ranks, n_file, n_built, offset, n_check, step, snapshot_index;
+  PetscInt n_local;
+  PetscBool has;
+  hid_t fid, grp;
+  checkpoint_io io = {s->comm, s->rank, path, -1, NULL};
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.checkpoint, 0, 0, 0, 0));
+  PetscCall(h5io_open(s->comm, path, &fid));
+
+  /* is it ours, and of this format? */
+  PetscCall(h5io_has_attr(path, fid, "magic", &has));
+  PetscCheck(has, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-restart %s: not a dmhs checkpoint (an HDF5 file without the 'magic' attribute)", path);
+  PetscCall(h5io_get_string(path, fid, "magic", text, sizeof(text)));
+  PetscCheck(!strcmp(text, CHECKPOINT_MAGIC), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-restart %s: not a dmhs checkpoint (magic '%s', expected '%s')", path, text, CHECKPOINT_MAGIC);
+  PetscCall(h5io_get_int64s(path, fid, "format_version", &version, 1));
+  PetscCall(h5io_get_string(path, fid, "dmhs_version", text, sizeof(text)));
+  PetscCheck(version == CHECKPOINT_FORMAT_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-restart %s: checkpoint format version %" PetscInt64_FMT " (written by dmhs %s); dmhs %s reads version %d",
+             path, version, text, DMHS_VERSION, CHECKPOINT_FORMAT_VERSION);
+  PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
+  PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text, s->scn->name);
+
+  /* the scene was built with the current options: it must hold as many particles */
+  PetscCall(h5io_get_int64s(path, fid, "n_particles", &n_file, 1));
+  PetscCall(h5io_get_int64s(path, fid, "n_ranks", &ranks, 1));
+  PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n_built));
+  PetscCheck(n_file == n_built, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-restart %s holds %" PetscInt64_FMT " particles but scene '%s' built %" PetscInt64_FMT
+             " with the current options: restart with the options of the run that wrote it (its 'options' attribute)",
+             path, n_file, s->scn->name, n_built);
+
+  /* rows per rank: as written on the same rank count (bitwise continuation), else
+   * an even split that migration then hands to the owners */
+  PetscCall(checkpoint_open_group(path, fid, "particles", "particle fields", &grp));
+  if (ranks == s->size) {
+    PetscInt64 mine;
+    PetscCall(h5io_read_rows(s->comm, path, grp, &counts_desc, &mine, 1, s->rank, s->size));
+    PetscCheck(mine >= 0 && mine <= n_file, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+               "checkpoint %s: rank_counts[%d] = %" PetscInt64_FMT " is out of range", path, (int)s->rank, mine);
+    n_local = (PetscInt)mine;
+  } else {
+    n_local = (PetscInt)(n_file / s->size + (s->rank < n_file % s->size ? 1 : 0));
+  }
+  PetscCall(h5io_offsets(s->comm, n_local, &offset, &n_check));
+  PetscCheck(n_check == n_file, s->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: rank_counts add up to %" PetscInt64_FMT ", not n_particles = %" PetscInt64_FMT, path,
+             n_check, n_file);
+
+  /* replace the owned particles */
+  s->ps.n_ghost = 0;
+  s->ps.n_owned = 0;
+  PetscCall(particles_reserve(&s->ps, n_local));
+  for (size_t k = 0; k < nf; k++) {
+    if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
+    PetscCall(h5io_read_rows(s->comm, path, grp, &t[k], *fields_member(&s->ps, &t[k]), n_local, offset, n_file));
+  }
+  s->ps.n_owned = n_local;
+  PetscCallHDF5(path, H5Gclose(grp));
+
+  /* run control */
+  PetscCall(h5io_get_int64s(path, fid, "step", &step, 1));
+  PetscCall(h5io_get_int64s(path, fid, "snapshot_index", &snapshot_index, 1));
+  PetscCall(h5io_get_reals(path, fid, "dt", &s->dt, 1));
+  PetscCall(h5io_get_reals(path, fid, "t", &s->t, 1));
+  PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
+  PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
+  PetscCall(h5io_get_reals(path, fid, "body_accel", s->body_accel, DMHS_DIM));
+  PetscCheck(step >= 0 && s->dt > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
+  s->step = (PetscInt)step;
+  s->io.snapshot_index = (PetscInt)snapshot_index;
+
+  /* private state */
+  for (int m = 0; m < s->n_modules; m++) {
+    module *mod = s->modules[m];
+    char owner[80];
+    hid_t modules;
+    if (!mod->checkpoint_read) continue;
+    PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
+    io.owner = owner;
+    PetscCall(checkpoint_open_group(path, fid, "modules", "module state", &modules));
+    PetscCall(checkpoint_open_group(path, modules, mod->name, owner, &io.group));
+    PetscCall(mod->checkpoint_read(mod, s, &io));
+    PetscCallHDF5(path, H5Gclose(io.group));
+    PetscCallHDF5(path, H5Gclose(modules));
+  }
+  if (s->scn->checkpoint_read) {
+    io.owner = "the scene";
+    PetscCall(checkpoint_open_group(path, fid, "scene", "scene state", &io.group));
+    PetscCall(s->scn->checkpoint_read(s->scn, s, &io));
+    PetscCallHDF5(path, H5Gclose(io.group));
+  }
+  PetscCall(h5io_close(path, &fid));
+  PetscCall(PetscLogEventEnd(events.checkpoint, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,244 @@
+/* Output, checkpoints, restart and the run record: the glue between the step
+ * loop (sim.c) and snapshot.c, xdmf.c, checkpoint.c.
+ *
+ * Signals: SIGTERM and SIGUSR1 (what batch systems send before the time
+ * limit) only set a flag; after every step the ranks agree on it with one
+ * MPI_Allreduce, write a checkpoint and stop cleanly. The handlers are
+ * one-shot (SA_RESETHAND): a second SIGTERM kills as usual.
+ *
+ * run.json (rank 0, rewritten atomically): dmhs_version, scene, ranks,
+ * options, restart_from, start, end (ISO 8601 UTC), status ("running",
+ * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message. */
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include "dmhs/sim.h"
+#include "dmhs/io.h"
+#include "dmhs/checkpoint.h"
+#include "dmhs/snapshot.h"
+#include "dmhs/xdmf.h"
+#include "dmhs/migrate.h"
+#include "dmhs/integrate.h"
+#include "h5check.h"
+
+static volatile sig_atomic_t io_signal_received = 0;
+
+static void io_on_signal(int sig) { io_signal_received = sig; }
+
+static const char *io_signal_name(int sig) {
+  return sig == SIGTERM ? "SIGTERM" : sig == SIGUSR1 ? "SIGUSR1" : "a signal";
+}
+
+PetscErrorCode io_set_from_options(sim *s) {
+  io_state *io = &s->io;
+  PetscFunctionBeginUser;
+  io->snapshots = PETSC_TRUE;
+  io->checkpoint_at_end = PETSC_TRUE;
+  io->last_checkpoint_step = -1;
+  PetscOptionsBegin(s->comm, NULL, "Output, checkpoints and restart", NULL);
+  PetscCall(PetscOptionsBool("-output_snapshots",
+                             "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
+                             io->snapshots, &io->snapshots, NULL));
+  PetscCall(PetscOptionsReal("-checkpoint_interval",
+                             "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
+                             io->checkpoint_interval, &io->checkpoint_interval, NULL));
+  PetscCall(PetscOptionsBool("-checkpoint_at_end", "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
+                             io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
+  PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint file (same scene and options)", NULL,
+                               io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
+  PetscOptionsEnd();
+  PetscCheck(io->checkpoint_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-checkpoint_interval must be >= 0 (got %g; 0 = never)", io->checkpoint_interval);
+  PetscFunctionReturn(0);
+}
+
+/* ---- run.json ---------------------------------------------------------- */
+
+static void io_now_iso(char *buf, size_t len) {
+  time_t now = time(NULL);
+  struct tm tm;
+  gmtime_r(&now, &tm);
+  strftime(buf, len, "%Y-%m-%dT%H:%M:%SZ", &tm);
+}
+
+static void io_json_string(FILE *f, const char *v) {
+  fputc('"', f);
+  for (const unsigned char *c = (const unsigned char *)(v ? v : ""); *c; c++) {
+    if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
+    else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
+    else fputc(*c, f);
+  }
+  fputc('"', f);
+}
+
+/* Plain C (no PETSc calls): also used on the error path. Returns 0 or an errno. */
+static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
+  char path[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 24], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16];
+  snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
+  FILE *f = fopen(tmp, "w");
+  if (!f) return errno ? errno : EIO;
+  fprintf(f, "{\n  \"dmhs_version\": ");
+  io_json_string(f, DMHS_VERSION);
+  fprintf(f, ",\n  \"scene\": ");
+  io_json_string(f, s->scn ? s->scn->name : "");
+  fprintf(f, ",\n  \"ranks\": %d,\n  \"options\": ", (int)s->size);
+  io_json_string(f, s->io.options);
+  fprintf(f, ",\n  \"restart_from\": ");
+  if (s->io.restart_file[0]) io_json_string(f, s->io.restart_file);
+  else fprintf(f, "null");
+  fprintf(f, ",\n  \"start\": ");
+  io_json_string(f, s->io.start_time);
+  fprintf(f, ",\n  \"end\": ");
+  if (ended) {
+    io_now_iso(end, sizeof(end));
+    io_json_string(f, end);
+  } else fprintf(f, "null");
+  fprintf(f, ",\n  \"status\": ");
+  io_json_string(f, status);
+  fprintf(f, ",\n  \"step\": %lld,\n  \"t\": %.17g,\n  \"checkpoint\": ", (long long)s->step, s->t);
+  if (s->io.last_checkpoint_step >= 0) io_json_string(f, checkpoint);
+  else fprintf(f, "null");
+  if (message) {
+    fprintf(f, ",\n  \"message\": ");
+    io_json_string(f, message);
+  }
+  int failed = fprintf(f, "\n}\n") < 0;
+  failed = fclose(f) != 0 || failed;
+  if (failed) return EIO;
+  return rename(tmp, path) ? errno : 0;
+}
+
+static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
+  PetscFunctionBeginUser;
+  if (s->rank == 0) {
+    const int err = io_write_run_json(s, status, NULL, ended);
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s", s->output_dir,
+               strerror(err));
+  }
+  PetscFunctionReturn(0);
+}
+
+void io_record_error(sim *s, const char *message) {
+  if (!s || s->rank != 0 || !s->io.run_json_started) return;
+  (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr", 1);
+}
+
+/* ---- setup, restart ------------------------------------------------------ */
+
+PetscErrorCode io_setup(sim *s) {
+  io_state *io = &s->io;
+  struct sigaction sa;
+  PetscFunctionBeginUser;
+  PetscCall(h5check_quiet());
+  PetscCall(PetscOptionsGetAll(NULL, &io->options));
+  io_now_iso(io->start_time, sizeof(io->start_time));
+  PetscCall(io_run_json(s, "running", PETSC_FALSE));
+  io->run_json_started = PETSC_TRUE;
+  if (s->rank == 0) PetscCall(xdmf_create(&io->xdmf));
+  memset(&sa, 0, sizeof(sa));
+  sa.sa_handler = io_on_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART | SA_RESETHAND;
+  PetscCheck(sigaction(SIGTERM, &sa, NULL) == 0 && sigaction(SIGUSR1, &sa, NULL) == 0, PETSC_COMM_SELF,
+             PETSC_ERR_SYS, "cannot install the SIGTERM/SIGUSR1 handlers: %s", strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_restart(sim *s) {
+  io_state *io = &s->io;
+  PetscFunctionBeginUser;
+  if (io->restart_file[0]) {
+    const double dt_options = s->dt;
+    PetscCall(checkpoint_read(s, io->restart_file));
+    PetscCall(migrate_particles(s));
+    PetscCall(sim_rebuild_neighbours(s));
+    PetscCall(integrate_check_state(s));
+    io->restarted = PETSC_TRUE;
+    PetscCall(PetscPrintf(s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
+                          io->restart_file, s->step, s->t, s->dt,
+                          s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
+    if (s->rank == 0 && io->snapshots) {
+      /* index the snapshots the interrupted run had written before the checkpoint */
+      PetscCall(xdmf_scan(io->xdmf, s->output_dir, io->snapshot_index));
+    }
+  }
+  io->restart_t = s->t;
+  if (io->checkpoint_interval > 0) {
+    const double k = PetscFloorReal((s->t + 0.5 * s->dt) / io->checkpoint_interval);
+    io->next_checkpoint_t = (k + 1) * io->checkpoint_interval;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* ---- during the run ------------------------------------------------------ */
+
+PetscErrorCode io_output(sim *s) {
+  io_state *io = &s->io;
+  char name[64], path[PETSC_MAX_PATH_LEN];
+  PetscInt64 n;
+  PetscFunctionBeginUser;
+  if (!io->snapshots) PetscFunctionReturn(0);
+  PetscCall(snapshot_write(s, io->snapshot_index, &n));
+  if (s->rank == 0) {
+    PetscCall(snapshot_name(io->snapshot_index, name, sizeof(name)));
+    PetscCall(xdmf_add(io->xdmf, name, s->t, n, NULL));
+    PetscCall(sim_output_path(s, "particles.xdmf", path, sizeof(path)));
+    PetscCall(xdmf_write(io->xdmf, path));
+  }
+  io->snapshot_index++;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode io_checkpoint(sim *s) {
+  char path[PETSC_MAX_PATH_LEN];
+  PetscFunctionBeginUser;
+  PetscCall(sim_output_path(s, "checkpoint.h5", path, sizeof(path)));
+  PetscCall(checkpoint_write(s, path));
+  s->io.last_checkpoint_step = s->step;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
+  io_state *io = &s->io;
+  int mine = io_signal_received, any;
+  PetscBool due = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  *stop = PETSC_FALSE;
+  /* every rank must take the same branch: the checkpoint is collective */
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, s->comm));
+  if (io->checkpoint_interval > 0 && s->t >= io->next_checkpoint_t - 0.5 * s->dt) {
+    due = PETSC_TRUE;
+    while (io->next_checkpoint_t <= s->t + 0.5 * s->dt) io->next_checkpoint_t += io->checkpoint_interval;
+  }
+  if (due || any) PetscCall(io_checkpoint(s));
+  if (any) {
+    char path[PETSC_MAX_PATH_LEN];
+    PetscCall(sim_output_path(s, "checkpoint.h5", path, sizeof(path)));
+    io->stop_signal = any;
+    *stop = PETSC_TRUE;
+    PetscCall(PetscPrintf(s->comm,
+                          "dmhs: received %s: stopped at step %" PetscInt_FMT ", t = %.9g s after writing the "
+                          "checkpoint %s; continue with -restart %s\n",
+                          io_signal_name(any), s->step, s->t, path, path));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_finish(sim *s) {
+  io_state *io = &s->io;
+  PetscFunctionBeginUser;
+  if (io->checkpoint_at_end && io->last_checkpoint_step != s->step) PetscCall(io_checkpoint(s));
+  PetscCall(io_run_json(s, io->stop_signal ? "signal-checkpoint" : "completed", PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_destroy(sim *s) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(s->io.options));
+  PetscCall(xdmf_destroy(&s->io.xdmf));
+  PetscFunctionReturn(0);
+}

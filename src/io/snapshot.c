@@ -1,0 +1,57 @@
+/* Particle snapshots: every FIELD_OUTPUT field of the field table, owned rows
+ * of every rank in rank order, one parallel HDF5 file per output time
+ * (layout in snapshot.h). Nothing here names a field: adding a row with
+ * FIELD_OUTPUT to fields.c adds it to the snapshots and the XDMF index. */
+#include "dmhs/sim.h"
+#include "dmhs/snapshot.h"
+#include "dmhs/events.h"
+#include "h5check.h"
+#include "h5io.h"
+
+int snapshot_file_width(const field_desc *f) { return f->width == DMHS_DIM && DMHS_DIM == 2 ? 3 : f->width; }
+
+PetscErrorCode snapshot_name(PetscInt index, char *name, size_t len) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(name, len, "snap_%06" PetscInt_FMT ".h5", index));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global) {
+  char name[64], path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  size_t nf;
+  const field_desc *t = fields_table(&nf);
+  PetscInt64 offset, n;
+  hid_t fid, grp;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.output, 0, 0, 0, 0));
+  PetscCall(snapshot_name(index, name, sizeof(name)));
+  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
+
+  PetscCall(h5io_create(s->comm, tmp, &fid));
+  {
+    const double time = s->t, dt = s->dt;
+    const PetscInt64 step = s->step, dim = DMHS_DIM, count = n;
+    PetscCall(h5io_put_reals(tmp, fid, "time", &time, 1));
+    PetscCall(h5io_put_reals(tmp, fid, "dt", &dt, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "step", &step, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "dim", &dim, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "n_particles", &count, 1));
+    PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
+    PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
+    PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+  }
+  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  for (size_t k = 0; k < nf; k++) {
+    if (!(t[k].flags & FIELD_OUTPUT)) continue;
+    PetscCall(h5io_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]), s->ps.n_owned, offset, n,
+                              snapshot_file_width(&t[k])));
+  }
+  PetscCallHDF5(tmp, H5Gclose(grp));
+  PetscCall(h5io_close(tmp, &fid));
+  PetscCall(h5io_commit(s->comm, tmp, path));
+  *n_global = n;
+  PetscCall(PetscLogEventEnd(events.output, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

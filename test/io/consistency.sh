@@ -1,0 +1,29 @@
+#!/bin/bash
+# XDMF / HDF5 consistency of a run's output directory (check_xdmf.py), the
+# snapshot metadata, and -output_snapshots false writing none.
+# Usage: consistency.sh DMHS PYTHON WORKDIR
+set -euo pipefail
+EXE=$1 PY=$2 W=$3
+source "$(dirname "$0")/common.sh"
+rm -rf "$W" && mkdir -p "$W"
+"$EXE" "${QUICK[@]}" -t_end 0.02 -output_dir "$W/run" > "$W/run.log"
+"$PY" "$HERE/check_xdmf.py" "$W/run" 5
+"$PY" - "$W/run" <<'PYEOF'
+import json, os, sys, h5py
+d = sys.argv[1]
+with h5py.File(os.path.join(d, "snap_000004.h5"), "r") as f:
+    a = f.attrs
+    assert abs(a["time"][0] - 0.02) < 1e-15 and a["step"][0] == 800 and a["dt"][0] == 2.5e-5, dict(a)
+    assert a["dmhs_version"].decode() and a["scene"] == b"poiseuille", dict(a)
+    assert b"-channel_nx 10" in a["options"], a["options"]
+    assert f["particles/x"].shape == (260, 3) and (f["particles/x"][:, 2] == 0).all()
+    assert sorted(f["particles/gid"][()]) == list(range(260))
+run = json.load(open(os.path.join(d, "run.json")))
+for k in ("dmhs_version", "options", "ranks", "start", "end", "status"):
+    assert k in run, k
+assert run["status"] == "completed" and run["ranks"] == 1 and run["end"], run
+print("snapshot attributes and run.json: OK")
+PYEOF
+"$EXE" "${QUICK[@]}" -t_end 0.01 -output_snapshots false -output_dir "$W/off" > "$W/off.log"
+! ls "$W/off" | grep -q -e '^snap_' -e xdmf || die "-output_snapshots false still wrote snapshots"
+echo "consistency: OK"

@@ -1,0 +1,20 @@
+# Output, checkpoints and restart (issue 5): scripts in test/io/, each a few
+# seconds on one rank. Output under <build>/test-output/io/<test>.
+set(DMHS_IO_OUT ${CMAKE_BINARY_DIR}/test-output/io)
+set(DMHS_IO_DIR ${CMAKE_CURRENT_LIST_DIR}/../io)
+foreach(t restart consistency signal corrupt)
+  add_test(NAME io_${t} COMMAND bash ${DMHS_IO_DIR}/${t}.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_IO_OUT}/${t})
+  set_tests_properties(io_${t} PROPERTIES LABELS "io;validation" TIMEOUT 180)
+endforeach()
+add_test(NAME io_signal_term COMMAND bash ${DMHS_IO_DIR}/signal.sh ${DMHS_EXE} ${DMHS_PYTHON}
+  ${DMHS_IO_OUT}/signal_term TERM)
+set_tests_properties(io_signal_term PROPERTIES LABELS "io;validation" TIMEOUT 180)
+
+# the parallel row layout on 3 ranks with uneven and empty row counts (h5io_mpi.sh)
+add_executable(h5io_mpi ${DMHS_IO_DIR}/h5io_mpi.c)
+target_include_directories(h5io_mpi PRIVATE ${PROJECT_SOURCE_DIR}/src)
+target_compile_options(h5io_mpi PRIVATE -Wall -Wextra -Werror)
+target_link_libraries(h5io_mpi PRIVATE dmhs_core)
+add_test(NAME io_h5io_mpi COMMAND bash ${DMHS_IO_DIR}/h5io_mpi.sh $<TARGET_FILE:h5io_mpi> ${DMHS_PYTHON}
+  ${DMHS_IO_OUT}/h5io_mpi ${DMHS_MPIRUN})
+set_tests_properties(io_h5io_mpi PROPERTIES LABELS "io;mpi" TIMEOUT 120)
