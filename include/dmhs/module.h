@@ -24,6 +24,9 @@ struct module {
   PetscErrorCode (*view)(module *self, struct sim *s, PetscViewer viewer);
   PetscErrorCode (*destroy)(module *self);
   void *data;
+  /* Potential energy of this module's interactions [J], summed over ranks
+   * (NULL when the module has none, e.g. SPH or body forces). */
+  PetscErrorCode (*energy)(module *self, struct sim *s, double *e);
 };
 
 #endif

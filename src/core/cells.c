@@ -2,6 +2,7 @@
  * (self, E, NW, N, NE) so each pair is found once. */
 #include <math.h>
 #include "dmhs/cells.h"
+#include "dmhs/topology.h"
 
 PetscErrorCode cells_create(cells *c) {
   PetscFunctionBeginUser;
@@ -85,6 +86,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
   static const int stencil[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
   const double cut2 = cutoff * cutoff;
   const PetscInt n_owned = ps->n_owned;
+  const struct topology *excl = c->excl;
   c->n_pairs = 0;
   for (PetscInt cy = 0; cy < c->n[1]; cy++) {
     for (PetscInt cx = 0; cx < c->n[0]; cx++) {
@@ -109,6 +111,9 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
             if (ps->type[i] == PTYPE_WALL && ps->type[j] == PTYPE_WALL) continue;
             const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
             if (dx * dx + dy * dy >= cut2) continue;
+            /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 0) */
+            if (excl && ps->type[i] != PTYPE_FLUID && ps->type[j] != PTYPE_FLUID && topology_excluded(excl, ps, i, j))
+              continue;
             /* the owned (or lower) index first keeps sweeps' writes mostly on owned rows */
             if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
             c->pair_i[c->n_pairs] = PetscMin(i, j);
