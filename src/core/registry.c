@@ -104,6 +104,9 @@ PetscErrorCode registry_print_help(sim *s) {
           PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
           printed[j] = PETSC_TRUE;
         }
+    }
+    /* destroyed after the pass: an options pass may look at the other enabled modules */
+    for (int m = 0; m < s->n_modules; m++) {
       PetscCall(s->modules[m]->destroy(s->modules[m]));
       PetscCall(PetscFree(s->modules[m]));
     }
