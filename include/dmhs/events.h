@@ -9,6 +9,7 @@ typedef struct dmhs_events {
   PetscLogEvent sph_density, sph_eos, sph_wall, sph_force, body_force;
   PetscLogEvent diagnostics, output, check_state;
   PetscLogEvent checkpoint;
+  PetscLogEvent topology, bond, angle, repulsion, solid_load; /* solids (issue 3) */
 } dmhs_events;
 
 extern dmhs_events events;

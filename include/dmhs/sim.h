@@ -11,6 +11,7 @@
 #include "dmhs/scene.h"
 #include "dmhs/sph.h"
 #include "dmhs/io.h"
+#include "dmhs/topology.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -42,6 +43,7 @@ typedef struct sim {
   sph_params sph;
   PetscBool sph_enabled;
   double body_accel[DMHS_DIM]; /* body acceleration on fluid at the current time [m/s^2] */
+  topology *topo; /* bonds and angles (solids, issue 3); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
   scene *scn;

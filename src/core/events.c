@@ -24,5 +24,11 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("Output", id, &events.output));
   PetscCall(PetscLogEventRegister("CheckState", id, &events.check_state));
   PetscCall(PetscLogEventRegister("Checkpoint", id, &events.checkpoint));
+  /* solids (issue 3) */
+  PetscCall(PetscLogEventRegister("Topology", id, &events.topology));
+  PetscCall(PetscLogEventRegister("Bond", id, &events.bond));
+  PetscCall(PetscLogEventRegister("Angle", id, &events.angle));
+  PetscCall(PetscLogEventRegister("Repulsion", id, &events.repulsion));
+  PetscCall(PetscLogEventRegister("SolidLoad", id, &events.solid_load));
   PetscFunctionReturn(0);
 }
