@@ -14,11 +14,14 @@ typedef struct cells {
   PetscInt *cell_of;
   PetscInt n_alloc_cells, n_alloc_particles;
   double (*xs)[DMHS_DIM];  /* positions in cell order (scratch) */
-  unsigned char *flag;     /* per sorted row: 1 = ghost, 2 = wall (scratch) */
+  unsigned char *flag;     /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */
   PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
   PetscInt *pair_i, *pair_j;
+  /* Bonded pairs to leave out (solids, issue 3; NULL = none): tested only for
+   * pairs of two non-fluid particles, so the liquid's pairs pay nothing. */
+  const struct topology *excl;
 } cells;
 
 PetscErrorCode cells_create(cells *c);

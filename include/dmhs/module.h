@@ -29,6 +29,9 @@ struct module {
    * state, schedules ...) with checkpoint_put_* / checkpoint_get_* (checkpoint.h). */
   PetscErrorCode (*checkpoint_write)(module *self, struct sim *s, struct checkpoint_io *io);
   PetscErrorCode (*checkpoint_read)(module *self, struct sim *s, struct checkpoint_io *io);
+  /* Potential energy of this module's interactions [J], summed over ranks
+   * (NULL when the module has none, e.g. SPH or body forces). */
+  PetscErrorCode (*energy)(module *self, struct sim *s, double *e);
 };
 
 #endif

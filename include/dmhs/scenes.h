@@ -6,5 +6,7 @@
 PetscErrorCode poiseuille_scene_create(scene **out); /* scenes/poiseuille.c */
 PetscErrorCode couette_scene_create(scene **out);    /* scenes/couette.c */
 PetscErrorCode box_scene_create(scene **out);        /* scenes/box.c */
+PetscErrorCode cantilever_scene_create(scene **out); /* scenes/cantilever.c */
+PetscErrorCode flap_scene_create(scene **out);       /* scenes/flap.c */
 
 #endif

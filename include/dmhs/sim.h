@@ -13,6 +13,7 @@
 #include "dmhs/partition.h" /* mpi */
 #include "dmhs/migrate.h"   /* mpi */
 #include "dmhs/io.h"
+#include "dmhs/topology.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -49,6 +50,7 @@ typedef struct sim {
   sph_params sph;
   PetscBool sph_enabled;
   double body_accel[DMHS_DIM]; /* body acceleration on fluid at the current time [m/s^2] */
+  topology *topo; /* bonds and angles (solids, issue 3); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
   scene *scn;

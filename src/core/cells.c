@@ -2,6 +2,7 @@
  * (self, E, NW, N, NE) so each pair is found once. */
 #include <math.h>
 #include "dmhs/cells.h"
+#include "dmhs/topology.h"
 
 PetscErrorCode cells_create(cells *c) {
   PetscFunctionBeginUser;
@@ -110,7 +111,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
     const PetscInt i = c->order[a];
     c->xs[a][0] = ps->x[i][0];
     c->xs[a][1] = ps->x[i][1];
-    c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0);
+    c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0) | (ps->type[i] != PTYPE_FLUID ? 4 : 0);
   }
 
   /* half stencil: each unordered pair of cells is visited once */
@@ -118,6 +119,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
   const double cut2 = cutoff * cutoff;
   const double(*restrict xs)[2] = (const double(*)[2])c->xs;
   const unsigned char *restrict flag = c->flag;
+  const struct topology *excl = c->excl;
   c->n_pairs = 0;
   for (PetscInt cy = 0; cy < c->n[1]; cy++) {
     for (PetscInt cx = 0; cx < c->n[0]; cx++) {
@@ -142,9 +144,12 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
             if (dx * dx + dy * dy >= cut2) continue;
             /* nobody owns a ghost-ghost pair; walls do not act on each other */
             const unsigned both = fa & flag[b];
-            if (both) continue;
-            if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
+            if (both & 3) continue;
             const PetscInt i = c->order[a], j = c->order[b];
+            /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 0): only between two
+             * non-liquid particles, so liquid pairs never pay for the lookup */
+            if ((both & 4) && excl && topology_excluded(excl, ps, i, j)) continue;
+            if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
             c->pair_i[c->n_pairs] = PetscMin(i, j);
             c->pair_j[c->n_pairs] = PetscMax(i, j);
             c->n_pairs++;

@@ -6,6 +6,10 @@
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
 #include "dmhs/scenes.h"
+#include "dmhs/bond.h"
+#include "dmhs/angle_harmonic.h"
+#include "dmhs/repulsion.h"
+#include "dmhs/solid_load.h"
 
 static const struct {
   const char *name;
@@ -14,6 +18,8 @@ static const struct {
     {"poiseuille", poiseuille_scene_create},
     {"couette", couette_scene_create},
     {"box", box_scene_create},
+    {"cantilever", cantilever_scene_create}, /* solids (issue 3) */
+    {"flap", flap_scene_create},
 };
 
 static const struct {
@@ -22,6 +28,12 @@ static const struct {
 } module_table[] = {
     {"sph", sph_module_create},
     {"body_force", body_force_module_create},
+    /* solids (issue 3) */
+    {"bond_harmonic", bond_harmonic_module_create},
+    {"bond_nonlinear", bond_nonlinear_module_create},
+    {"angle_harmonic", angle_harmonic_module_create},
+    {"repulsion", repulsion_module_create},
+    {"solid_load", solid_load_module_create},
 };
 
 #define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))
@@ -92,6 +104,9 @@ PetscErrorCode registry_print_help(sim *s) {
           PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
           printed[j] = PETSC_TRUE;
         }
+    }
+    /* destroyed after the pass: an options pass may look at the other enabled modules */
+    for (int m = 0; m < s->n_modules; m++) {
       PetscCall(s->modules[m]->destroy(s->modules[m]));
       PetscCall(PetscFree(s->modules[m]));
     }

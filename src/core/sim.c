@@ -118,6 +118,13 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
   double lo[DMHS_DIM], hi[DMHS_DIM];
   PetscFunctionBeginUser;
   PetscCall(halo_build(&s->hal, &s->dom, &s->part, &s->ps)); /* mpi: + partition */
+  /* solids (issue 3): bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves out */
+  if (s->topo) {
+    PetscCall(PetscLogEventBegin(events.topology, 0, 0, 0, 0));
+    PetscCall(topology_resolve(s->topo, &s->ps));
+    PetscCall(PetscLogEventEnd(events.topology, 0, 0, 0, 0));
+    s->cel.excl = s->topo->special_include ? NULL : s->topo;
+  }
   if (s->pair_cutoff > 0) {
     PetscCall(PetscLogEventBegin(events.pairs, 0, 0, 0, 0));
     for (int k = 0; k < DMHS_DIM; k++) {
@@ -293,6 +300,7 @@ PetscErrorCode sim_destroy(sim **sp) {
     PetscCall(PetscFree(s->scn));
   }
   PetscCall(io_destroy(s));
+  PetscCall(topology_destroy(&s->topo)); /* solids (issue 3) */
   PetscCall(halo_destroy(&s->hal));
   PetscCall(partition_destroy(&s->part)); /* mpi */
   PetscCall(cells_destroy(&s->cel));

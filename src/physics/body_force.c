@@ -1,7 +1,8 @@
 /* Body force on liquid particles:
  *   a_body(t) = F                         (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
- * plus gravity (0, -g). The current value is also left in sim->body_accel,
+ * plus gravity (0, -g). -body_force_amplitude g0 is F = (g0, 0), the pulsatile
+ * drive g0 sin(2 pi t/T) of the vein case (SPEC 4.3). The current value is also left in sim->body_accel,
  * where the wall pass reads it for the hydrostatic part of wall pressure. */
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
@@ -31,14 +32,25 @@ static void body_force_value(const body_force_data *d, double t, double a[DMHS_D
 static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   body_force_data *d = self->data;
   PetscInt n = DMHS_DIM;
-  PetscBool set;
+  PetscBool set, set_amplitude;
+  double amplitude = d->F[0];
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
   PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, &set));
+  PetscCall(PetscOptionsReal("-body_force_amplitude",
+                             "Drive amplitude g0 along x [m/s^2]: g0 sin(2 pi t/T) with -body_force_period T, else constant "
+                             "(same as -body_force g0,0)",
+                             NULL, amplitude, &amplitude, &set_amplitude));
   PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
                              d->period, &d->period, NULL));
   PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
   PetscOptionsEnd();
+  PetscCheck(!(set && set_amplitude), s->comm, PETSC_ERR_ARG_INCOMP,
+             "give either -body_force Fx,Fy or -body_force_amplitude g0 (along x), not both");
+  if (set_amplitude) {
+    d->F[0] = amplitude;
+    d->F[1] = 0;
+  }
   PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-body_force takes %d components Fx,Fy (got %d)",
              DMHS_DIM, (int)n);
   PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-body_force_period must be >= 0 (got %g)", d->period);

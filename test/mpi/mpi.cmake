@@ -32,6 +32,11 @@ dmhs_mpi_invariance(poiseuille "1;2;3;4"
   -options_file ${PROJECT_SOURCE_DIR}/input/poiseuille.opts
   -channel_nx 20 -channel_ny 40 -sph_h 7.5e-5 -dt 1e-4 -t_end 0.1)
 
+# Flexible flap (bonds, angles, repulsion; partners resolved by gid through
+# the ghosts), quick variant, 1000 steps.
+dmhs_mpi_invariance(flap "1;2;3;4"
+  -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts -t_end 0.01 -debug_migration)
+
 # Migration stress: a strong Taylor-Green vortex (1 m/s over a 4 mm box) carries
 # particles across many rank boundaries; -partition_imbalance 1.0001 forces a
 # METIS repartition every 50 steps on top (tens of thousands of moves).

@@ -1,0 +1,48 @@
+/* Bond modules (bond_harmonic.c, bond_nonlinear.c): shared parameters, the
+ * -bond_style names, and the scene-side default setter.
+ *   harmonic:  U = K (r - r0)^2                          K [J/m^2]
+ *   nonlinear: U = k_b (r - r0)^2 / (r_max^2 - (r - r0)^2)  k_b [J], r_max [m]
+ * Coefficients are per bond type: -bond_k 1e6 (every type) or -bond_k 1e6,2e6 (types 0, 1). */
+#ifndef DMHS_BOND_H
+#define DMHS_BOND_H
+#include "dmhs/module.h"
+#include "dmhs/topology.h"
+
+struct sim;
+
+typedef enum { BOND_HARMONIC, BOND_NONLINEAR } bond_style;
+extern const char *const bond_style_names[];
+
+/* Spring time-step limit dt <= SPRING_DT_FACTOR sqrt(m / k), k = U'' [N/m], m the
+ * smallest moving mass. Velocity Verlet is stable for omega dt < 2; a particle
+ * held by n equal springs has omega up to about sqrt(2 n k/m) (n = 2 in a chain:
+ * 2 sqrt(k/m)); 0.2 keeps omega dt <= 0.6 for up to 4-5 springs per particle and
+ * the energy error per period small (about (omega dt)^2/24 in relative terms). */
+#define SPRING_DT_FACTOR 0.2
+
+typedef struct bond_params {
+  double k[TOPOLOGY_MAX_TYPES];    /* K [J/m^2] (harmonic) or k_b [J] (nonlinear) */
+  double r0[TOPOLOGY_MAX_TYPES];   /* rest length [m] */
+  double rmax[TOPOLOGY_MAX_TYPES]; /* nonlinear only: largest |r - r0| [m] */
+  PetscInt n_k, n_r0, n_rmax;      /* values given on the command line (0 = scene default) */
+  double m_min;                    /* smallest mass of a moving bonded particle [kg] */
+} bond_params;
+
+PetscErrorCode bond_harmonic_module_create(module **m);
+PetscErrorCode bond_nonlinear_module_create(module **m);
+/* The scene's defaults for every bond type (rmax ignored by the harmonic style);
+ * call after topology_enable, before the options pass of the modules. */
+PetscErrorCode bond_set_default(struct sim *s, double k, double r0, double rmax);
+/* Resolved bond parameters of the enabled bond module (for scenes' diagnostics). */
+PetscErrorCode bond_get_params(struct sim *s, bond_style *style, const bond_params **p);
+
+/* Shared by the solid modules' setup: checks per-type coefficients given for
+ * n_given types cover n_types (one value = every type), names the option. */
+PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given, PetscInt n_types);
+/* Makes sure the topology has been resolved for the current positions (the
+ * pre-flight report runs before the first neighbour build). */
+PetscErrorCode bond_ensure_resolved(struct sim *s);
+/* Smallest mass among owned solid particles, over all ranks (+inf when none). */
+PetscErrorCode bond_min_solid_mass(struct sim *s, double *m);
+
+#endif

@@ -1,0 +1,199 @@
+/* Module angle_harmonic: U = k_a (theta - theta0)^2 (SPEC 2; LAMMPS
+ * angle_style harmonic, theta0 in degrees as there). Angle arithmetic
+ * (atan2 form, exact near 0 and pi) in angle_iact.h.
+ * Time-step limit: a transverse displacement u of an arm of length r turns the
+ * angle by u/r, so the angle acts as a spring k = U''/r^2 = 2 k_a/r^2 on it;
+ * limit SPRING_DT_FACTOR sqrt(m/k) with r the shortest current arm. */
+#include <math.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/bond.h"
+#include "dmhs/angle_harmonic.h"
+#include "dmhs/events.h"
+#include "dmhs/integrate.h"
+#include "angle_iact.h"
+
+typedef struct {
+  double k[TOPOLOGY_MAX_TYPES];          /* [J] */
+  double theta0_deg[TOPOLOGY_MAX_TYPES]; /* [deg] as given */
+  double theta0[TOPOLOGY_MAX_TYPES];     /* [rad] */
+  PetscInt n_k, n_theta0;
+  double m_min;
+} angle_data;
+
+static module *angle_find(sim *s) {
+  for (int m = 0; m < s->n_modules; m++)
+    if (!strcmp(s->modules[m]->name, "angle_harmonic")) return s->modules[m];
+  return NULL;
+}
+
+PetscErrorCode angle_set_default(sim *s, double k, double theta0_deg) {
+  module *m = angle_find(s);
+  PetscFunctionBeginUser;
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "angle_set_default: angle_harmonic is not enabled (call topology_enable)");
+  angle_data *d = m->data;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
+    d->k[t] = k;
+    d->theta0_deg[t] = theta0_deg;
+    d->theta0[t] = theta0_deg * M_PI / 180.0;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode angle_get_params(sim *s, double *k, double *theta0) {
+  module *m = angle_find(s);
+  PetscFunctionBeginUser;
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "angle_harmonic is not enabled");
+  const angle_data *d = m->data;
+  *k = d->k[0];
+  *theta0 = d->theta0_deg[0] * M_PI / 180.0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_set_from_options(module *self, sim *s) {
+  angle_data *d = self->data;
+  PetscInt n;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Harmonic angles U = k_a (theta - theta0)^2 (module angle_harmonic)", NULL);
+  n = TOPOLOGY_MAX_TYPES;
+  PetscCall(PetscOptionsRealArray("-angle_k", "Angle stiffness k_a [J], one value or one per angle type", NULL, d->k, &n,
+                                  &set));
+  d->n_k = set ? n : 0;
+  n = TOPOLOGY_MAX_TYPES;
+  PetscCall(PetscOptionsRealArray("-angle_theta0", "Rest angle theta0 [deg], one value or one per angle type", NULL,
+                                  d->theta0_deg, &n, &set));
+  d->n_theta0 = set ? n : 0;
+  PetscOptionsEnd();
+  /* the far end of an angle is two bonds from its owned anchor */
+  self->reach = 0;
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->needs & MODULE_NEEDS_BONDS) self->reach = PetscMax(self->reach, 2.0 * s->modules[m]->reach);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_setup(module *self, sim *s) {
+  angle_data *d = self->data;
+  const PetscInt nt = s->topo->n_angle_types;
+  PetscFunctionBeginUser;
+  PetscCall(bond_check_type_coeffs("-angle_k", d->k, d->n_k, nt));
+  PetscCall(bond_check_type_coeffs("-angle_theta0", d->theta0_deg, d->n_theta0, nt));
+  for (PetscInt t = 0; t < nt; t++) {
+    PetscCheck(d->k[t] >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-angle_k must be >= 0 (type %" PetscInt_FMT ": %g J)",
+               t, d->k[t]);
+    PetscCheck(d->theta0_deg[t] >= 0 && d->theta0_deg[t] <= 180, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-angle_theta0 must lie in [0, 180] deg (type %" PetscInt_FMT ": %g)", t, d->theta0_deg[t]);
+  }
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) d->theta0[t] = d->theta0_deg[t] * M_PI / 180.0;
+  PetscCall(bond_min_solid_mass(s, &d->m_min));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_compute(module *self, sim *s) {
+  const angle_data *d = self->data;
+  const topology *t = s->topo;
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.angle, 0, 0, 0, 0));
+  const PetscInt na = t->n_angle_local;
+  const PetscInt(*restrict angle)[3] = (const PetscInt(*)[3])t->angle;
+  const PetscInt *restrict type = t->angle_ltype;
+  const double(*restrict x)[2] = (const double(*)[2])ps->x;
+  const double *restrict mass = ps->mass;
+  const double *restrict K = d->k, *restrict TH0 = d->theta0;
+  double(*restrict a)[2] = ps->a;
+  for (PetscInt q = 0; q < na; q++) {
+    const PetscInt i = angle[q][0], j = angle[q][1], k = angle[q][2], ty = type[q];
+    const double ra[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
+    const double rb[2] = {x[k][0] - x[j][0], x[k][1] - x[j][1]};
+    double fi[2], fk[2];
+    (void)angle_harmonic_iact(K[ty], TH0[ty], ra, rb, fi, fk);
+    const double mi = 1.0 / mass[i], mj = 1.0 / mass[j], mk = 1.0 / mass[k];
+    a[i][0] += fi[0] * mi;
+    a[i][1] += fi[1] * mi;
+    a[k][0] += fk[0] * mk;
+    a[k][1] += fk[1] * mk;
+    a[j][0] -= (fi[0] + fk[0]) * mj;
+    a[j][1] -= (fi[1] + fk[1]) * mj;
+  }
+  PetscCall(PetscLogFlops(60.0 * (double)na));
+  PetscCall(PetscLogEventEnd(events.angle, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_energy_sum(module *self, sim *s, double *e) {
+  const angle_data *d = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < t->n_angle_local; q++) {
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
+    const double dth = angle_theta(ra, rb) - d->theta0[ty];
+    local += t->angle_weight[q] * d->k[ty] * dth * dth;
+  }
+  PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_max_dt(module *self, sim *s, dt_limits *l) {
+  const angle_data *d = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  double local = INFINITY, limit;
+  PetscFunctionBeginUser;
+  if (!isfinite(d->m_min)) PetscFunctionReturn(0);
+  PetscCall(bond_ensure_resolved(s));
+  for (PetscInt q = 0; q < t->n_angle_local; q++) {
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const double r = PetscMin(hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]),
+                              hypot(ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]));
+    if (d->k[ty] > 0) local = PetscMin(local, SPRING_DT_FACTOR * sqrt(d->m_min * r * r / (2.0 * d->k[ty])));
+  }
+  PetscCallMPI(MPI_Allreduce(&local, &limit, 1, MPI_DOUBLE, MPI_MIN, s->comm));
+  if (isfinite(limit))
+    PetscCall(dt_limits_add(l, "angle harmonic", "0.2 sqrt(m/k), k = 2 k_a/r^2, r = shortest arm", limit));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_view(module *self, sim *s, PetscViewer v) {
+  const angle_data *d = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(v, "angle_harmonic: %" PetscInt_FMT " angles, U = k_a (theta - theta0)^2\n",
+                                   s->topo->n_angles));
+  for (PetscInt t = 0; t < s->topo->n_angle_types; t++)
+    PetscCall(PetscViewerASCIIPrintf(v, "  angle type %" PetscInt_FMT ": k_a = %g J, theta0 = %g deg\n", t, d->k[t],
+                                     d->theta0_deg[t]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode angle_destroy(module *self) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode angle_harmonic_module_create(module **m) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(m));
+  (*m)->name = "angle_harmonic";
+  (*m)->needs = MODULE_NEEDS_ANGLES;
+  (*m)->set_from_options = angle_set_from_options;
+  (*m)->setup = angle_setup;
+  (*m)->compute = angle_compute;
+  (*m)->max_dt = angle_max_dt;
+  (*m)->view = angle_view;
+  (*m)->destroy = angle_destroy;
+  (*m)->energy = angle_energy_sum;
+  PetscCall(PetscNew((angle_data **)&(*m)->data));
+  /* the vein leaflets' angles (SPEC 4.3) */
+  angle_data *d = (*m)->data;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
+    d->k[t] = 0.01;
+    d->theta0_deg[t] = 90.0;
+    d->theta0[t] = M_PI / 2;
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,64 @@
+/* What the two bond modules share: the -bond_style names, scene defaults,
+ * per-type coefficient checks, and the helpers their time-step limits use. */
+#include <math.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/bond.h"
+
+const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
+
+static module *bond_find(sim *s) {
+  for (int m = 0; m < s->n_modules; m++)
+    if (!strcmp(s->modules[m]->name, "bond_harmonic") || !strcmp(s->modules[m]->name, "bond_nonlinear"))
+      return s->modules[m];
+  return NULL;
+}
+
+PetscErrorCode bond_set_default(sim *s, double k, double r0, double rmax) {
+  module *m = bond_find(s);
+  PetscFunctionBeginUser;
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "bond_set_default: no bond module enabled (call topology_enable first)");
+  bond_params *p = m->data;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
+    p->k[t] = k;
+    p->r0[t] = r0;
+    p->rmax[t] = rmax;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_get_params(sim *s, bond_style *style, const bond_params **p) {
+  module *m = bond_find(s);
+  PetscFunctionBeginUser;
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "no bond module enabled");
+  *style = !strcmp(m->name, "bond_harmonic") ? BOND_HARMONIC : BOND_NONLINEAR;
+  *p = m->data;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given, PetscInt n_types) {
+  PetscFunctionBeginUser;
+  if (n_given == 1)
+    for (int t = 1; t < TOPOLOGY_MAX_TYPES; t++) v[t] = v[0];
+  else
+    PetscCheck(n_given == 0 || n_given >= n_types, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+               "%s: %" PetscInt_FMT " values given but the structure uses %" PetscInt_FMT
+               " types (give one value for every type, or one per type)",
+               option, n_given, n_types);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_ensure_resolved(sim *s) {
+  PetscFunctionBeginUser;
+  if (!s->topo->resolved) PetscCall(sim_rebuild_neighbours(s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_min_solid_mass(sim *s, double *m) {
+  double local = INFINITY;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < s->ps.n_owned; i++)
+    if (s->ps.type[i] == PTYPE_SOLID) local = PetscMin(local, s->ps.mass[i]);
+  PetscCallMPI(MPI_Allreduce(&local, m, 1, MPI_DOUBLE, MPI_MIN, s->comm));
+  PetscFunctionReturn(0);
+}

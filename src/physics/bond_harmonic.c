@@ -1,0 +1,139 @@
+/* Module bond_harmonic: U = K (r - r0)^2 per bond (SPEC 2), K [J/m^2] and r0 [m]
+ * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h.
+ * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/bond.h"
+#include "dmhs/events.h"
+#include "dmhs/integrate.h"
+#include "bond_iact.h"
+
+static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
+  bond_params *p = self->data;
+  PetscInt n;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Harmonic bonds U = K (r - r0)^2 (module bond_harmonic)", NULL);
+  n = TOPOLOGY_MAX_TYPES;
+  PetscCall(PetscOptionsRealArray("-bond_k", "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type",
+                                  NULL, p->k, &n, &set));
+  p->n_k = set ? n : 0;
+  n = TOPOLOGY_MAX_TYPES;
+  PetscCall(PetscOptionsRealArray("-bond_r0", "Bond rest length r0 [m], one value or one per bond type", NULL, p->r0,
+                                  &n, &set));
+  p->n_r0 = set ? n : 0;
+  PetscOptionsEnd();
+  double r0max = 0;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) r0max = PetscMax(r0max, p->r0[t]);
+  /* the ghost width must reach a stretched partner; 1.5 r0 is far beyond any sane stretch */
+  self->reach = 1.5 * r0max;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_setup(module *self, sim *s) {
+  bond_params *p = self->data;
+  const PetscInt nt = s->topo->n_bond_types;
+  PetscFunctionBeginUser;
+  PetscCall(bond_check_type_coeffs("-bond_k", p->k, p->n_k, nt));
+  PetscCall(bond_check_type_coeffs("-bond_r0", p->r0, p->n_r0, nt));
+  for (PetscInt t = 0; t < nt; t++) {
+    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_k must be > 0 (type %" PetscInt_FMT ": %g J/m^2)",
+               t, p->k[t]);
+    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)",
+               t, p->r0[t]);
+  }
+  PetscCall(bond_min_solid_mass(s, &p->m_min));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
+  const bond_params *p = self->data;
+  const topology *t = s->topo;
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.bond, 0, 0, 0, 0));
+  const PetscInt nb = t->n_bond_local;
+  const PetscInt(*restrict bond)[2] = (const PetscInt(*)[2])t->bond;
+  const PetscInt *restrict type = t->bond_ltype;
+  const double(*restrict x)[2] = (const double(*)[2])ps->x;
+  const double *restrict mass = ps->mass;
+  const double *restrict K = p->k, *restrict R0 = p->r0;
+  double(*restrict a)[2] = ps->a;
+  for (PetscInt b = 0; b < nb; b++) {
+    const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
+    const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
+    const double fr = bond_harmonic_iact(K[ty], R0[ty], sqrt(d[0] * d[0] + d[1] * d[1]));
+    const double fi = fr / mass[i], fj = fr / mass[j];
+    a[i][0] += fi * d[0];
+    a[i][1] += fi * d[1];
+    a[j][0] -= fj * d[0];
+    a[j][1] -= fj * d[1];
+  }
+  PetscCall(PetscLogFlops(20.0 * (double)nb));
+  PetscCall(PetscLogEventEnd(events.bond, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) {
+  const bond_params *p = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
+    local += t->bond_weight[b] * bond_harmonic_energy(p->k[ty], p->r0[ty], r);
+  }
+  PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_max_dt(module *self, sim *s, dt_limits *l) {
+  const bond_params *p = self->data;
+  double kmax = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < s->topo->n_bond_types; t++) kmax = PetscMax(kmax, 2.0 * p->k[t]);
+  if (kmax > 0 && isfinite(p->m_min))
+    PetscCall(dt_limits_add(l, "bond harmonic", "0.2 sqrt(m/k), k = U'' = 2K, m = min solid mass",
+                            SPRING_DT_FACTOR * sqrt(p->m_min / kmax)));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
+  const bond_params *p = self->data;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(v, "bond_harmonic: %" PetscInt_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
+                                   s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
+  for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
+    PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": K = %g J/m^2, r0 = %g m\n", t, p->k[t], p->r0[t]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_destroy(module *self) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_harmonic_module_create(module **m) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(m));
+  (*m)->name = "bond_harmonic";
+  (*m)->needs = MODULE_NEEDS_BONDS;
+  (*m)->set_from_options = bond_harmonic_set_from_options;
+  (*m)->setup = bond_harmonic_setup;
+  (*m)->compute = bond_harmonic_compute;
+  (*m)->max_dt = bond_harmonic_max_dt;
+  (*m)->view = bond_harmonic_view;
+  (*m)->destroy = bond_harmonic_destroy;
+  (*m)->energy = bond_harmonic_energy_sum;
+  PetscCall(PetscNew((bond_params **)&(*m)->data));
+  /* the vein leaflets' bonds (SPEC 4.3) until a scene or the options say otherwise */
+  bond_params *p = (*m)->data;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
+    p->k[t] = 1e6;
+    p->r0[t] = 1e-4;
+  }
+  PetscFunctionReturn(0);
+}

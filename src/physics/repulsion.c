@@ -1,0 +1,175 @@
+/* Module repulsion (SPEC 3): for every listed pair of one fluid and one
+ * solid/wall particle closer than r*,
+ *   F_fluid = K [(r* / r)^p1 - (r* / r)^p2] r_vec/r^2  (r_vec from the other to the fluid one)
+ * Options -repulsion_k [J], -repulsion_rstar [m], -repulsion_p1, -repulsion_p2
+ * (4, 2 by default as in the thesis runs; 12, 6 allowed; any p1 > p2 >= 1).
+ * Pair arithmetic in repulsion_iact.h; the (4, 2) and (12, 6) sweeps are
+ * specialised (integer powers unrolled), others use a generic sweep.
+ * Time-step limit: stiffness at r*, k = K (p1 - p2)/r*^2, on the reduced mass
+ * of the lightest fluid and solid particles: 0.2 sqrt(mu/k). */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/bond.h"
+#include "dmhs/repulsion.h"
+#include "dmhs/events.h"
+#include "dmhs/integrate.h"
+#include "repulsion_iact.h"
+
+typedef struct {
+  double K, rstar;
+  PetscInt p1, p2;
+} repulsion_data;
+
+PetscErrorCode repulsion_set_default(module *m, double K, double rstar, PetscInt p1, PetscInt p2) {
+  repulsion_data *d = m->data;
+  PetscFunctionBeginUser;
+  d->K = K;
+  d->rstar = rstar;
+  d->p1 = p1;
+  d->p2 = p2;
+  m->reach = rstar;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
+  repulsion_data *d = self->data;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Solid/wall-fluid repulsion f = K[(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 (module repulsion)",
+                    NULL);
+  PetscCall(PetscOptionsReal("-repulsion_k", "Repulsion strength K [J]", NULL, d->K, &d->K, NULL));
+  PetscCall(PetscOptionsReal("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar, &d->rstar, NULL));
+  PetscCall(PetscOptionsInt("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL, d->p1, &d->p1, NULL));
+  PetscCall(PetscOptionsInt("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL, d->p2, &d->p2, NULL));
+  PetscOptionsEnd();
+  PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)", d->K);
+  PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_rstar must be > 0 (got %g m)", d->rstar);
+  PetscCheck(d->p2 >= 1 && d->p1 > d->p2 && d->p1 <= 24, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-repulsion_p1 and -repulsion_p2 must satisfy 24 >= p1 > p2 >= 1 (got %" PetscInt_FMT ", %" PetscInt_FMT
+             "): p1 <= p2 would attract",
+             d->p1, d->p2);
+  self->reach = d->rstar;
+  PetscFunctionReturn(0);
+}
+
+typedef struct {
+  PetscInt n_pairs;
+  const PetscInt *restrict pi, *restrict pj, *restrict type;
+  const double (*restrict x)[2];
+  const double *restrict mass;
+  double (*restrict a)[2];
+  double K, rstar;
+} repulsion_args;
+
+static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2, const repulsion_args *A) {
+  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj, *restrict type = A->type;
+  const double(*restrict x)[2] = A->x;
+  const double *restrict mass = A->mass;
+  double(*restrict a)[2] = A->a;
+  const double K = A->K, rstar = A->rstar, rs2 = rstar * rstar;
+  for (PetscInt k = 0; k < A->n_pairs; k++) {
+    const PetscInt i = pi[k], j = pj[k];
+    if ((type[i] == PTYPE_FLUID) == (type[j] == PTYPE_FLUID)) continue; /* one fluid, one solid/wall */
+    const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
+    const double r2 = d[0] * d[0] + d[1] * d[1];
+    if (r2 >= rs2) continue;
+    const double fr = repulsion_iact(K, rstar, p1, p2, r2);
+    const double fi = fr / mass[i], fj = fr / mass[j];
+    a[i][0] += fi * d[0];
+    a[i][1] += fi * d[1];
+    a[j][0] -= fj * d[0];
+    a[j][1] -= fj * d[1];
+  }
+}
+
+static void sweep_4_2(const repulsion_args *A) { repulsion_sweep(4, 2, A); }
+static void sweep_12_6(const repulsion_args *A) { repulsion_sweep(12, 6, A); }
+
+static PetscErrorCode repulsion_compute(module *self, sim *s) {
+  const repulsion_data *d = self->data;
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.repulsion, 0, 0, 0, 0));
+  const repulsion_args A = {.n_pairs = s->cel.n_pairs,
+                            .pi = s->cel.pair_i,
+                            .pj = s->cel.pair_j,
+                            .type = ps->type,
+                            .x = (const double(*)[2])ps->x,
+                            .mass = ps->mass,
+                            .a = ps->a,
+                            .K = d->K,
+                            .rstar = d->rstar};
+  if (d->p1 == 4 && d->p2 == 2) sweep_4_2(&A);
+  else if (d->p1 == 12 && d->p2 == 6) sweep_12_6(&A);
+  else repulsion_sweep((int)d->p1, (int)d->p2, &A); /* generic: loop powers */
+  PetscCall(PetscLogFlops(10.0 * (double)s->cel.n_pairs));
+  PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_energy_sum(module *self, sim *s, double *e) {
+  const repulsion_data *d = self->data;
+  const particles *ps = &s->ps;
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
+    const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
+    if ((ps->type[i] == PTYPE_FLUID) == (ps->type[j] == PTYPE_FLUID)) continue;
+    const double w = 0.5 * ((i < ps->n_owned) + (j < ps->n_owned)); /* share owned here */
+    local += w * repulsion_energy(d->K, d->rstar, (int)d->p1, (int)d->p2,
+                                  hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]));
+  }
+  PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
+  const repulsion_data *d = self->data;
+  double local[2] = {INFINITY, INFINITY}, m[2];
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+    if (s->ps.type[i] == PTYPE_FLUID) local[0] = PetscMin(local[0], s->ps.mass[i]);
+    if (s->ps.type[i] == PTYPE_SOLID) local[1] = PetscMin(local[1], s->ps.mass[i]);
+  }
+  PetscCallMPI(MPI_Allreduce(local, m, 2, MPI_DOUBLE, MPI_MIN, s->comm));
+  if (!isfinite(m[0]) || d->K <= 0) PetscFunctionReturn(0);
+  /* against a wall the fluid particle moves alone; against a solid, both do */
+  const double mu = isfinite(m[1]) ? m[0] * m[1] / (m[0] + m[1]) : m[0];
+  const double k = d->K * (double)(d->p1 - d->p2) / (d->rstar * d->rstar);
+  PetscCall(dt_limits_add(l, "repulsion", "0.2 sqrt(mu/k), k = K (p1-p2)/r*^2, mu reduced mass",
+                          SPRING_DT_FACTOR * sqrt(mu / k)));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_view(module *self, sim *s, PetscViewer v) {
+  const repulsion_data *d = self->data;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(PetscViewerASCIIPrintf(v,
+                                   "repulsion: solid/wall-fluid, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
+                                   ", p2 = %" PetscInt_FMT "\n",
+                                   d->K, d->rstar, d->p1, d->p2));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_destroy(module *self) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode repulsion_module_create(module **m) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(m));
+  (*m)->name = "repulsion";
+  (*m)->needs = MODULE_NEEDS_PAIRS;
+  (*m)->set_from_options = repulsion_set_from_options;
+  (*m)->compute = repulsion_compute;
+  (*m)->max_dt = repulsion_max_dt;
+  (*m)->view = repulsion_view;
+  (*m)->destroy = repulsion_destroy;
+  (*m)->energy = repulsion_energy_sum;
+  PetscCall(PetscNew((repulsion_data **)&(*m)->data));
+  /* the vein case's coupling (SPEC 4.3) */
+  PetscCall(repulsion_set_default(*m, 4e-4, 1e-4, 4, 2));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,352 @@
+/* Scene flap (issue 3, coupled check): a flexible two-layer mass-spring flap
+ * (solid_strip, SPH + bonds + angles) standing on the lower wall of a
+ * periodic channel flow driven by a body force on the liquid. The flap's
+ * lowest row is part of the wall (clamped). The liquid sees the flap through
+ * the SPH sums (no-slip) and the solid/wall-fluid repulsion (no-penetration).
+ *
+ * Diagnostics, <output_dir>/flap.csv every output interval:
+ *   t, tip_dx, tip_dy [m] (mean displacement of the top row),
+ *   crossings (cumulative count of fluid particles that changed side of the
+ *   flap's mid-line while beside it: must stay 0),
+ *   slip (mean |v_fluid - v_flap| over fluid particles within 1.5 dx of a free
+ *   flap particle, divided by the largest fluid speed), u_max [m/s];
+ * and at the end <output_dir>/flap-particles.csv (x, y, vx, vy, type) for plots. */
+#include <math.h>
+#include <errno.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/scenes.h"
+#include "dmhs/bond.h"
+#include "dmhs/angle_harmonic.h"
+#include "dmhs/repulsion.h"
+#include "dmhs/body_force.h"
+#include "dmhs/solid_load.h"
+#include "solid_strip.h"
+
+typedef struct {
+  PetscInt nx, ny;      /* liquid lattice (before the flap is cut out) */
+  PetscInt flap_x;      /* lattice column of the flap's upstream layer */
+  PetscInt flap_rows;   /* flap rows above the wall */
+  double dx, solid_density_ratio;
+  solid_strip st;
+  module *body, *rep;
+  PetscInt n_fluid;     /* fluid gids are 0 .. n_fluid-1 */
+  signed char *side;    /* per fluid gid: -1/+1 beside the flap, 0 = not beside */
+  PetscInt crossings;
+  /* mpi: the strip's particles (2c + l) replicated on every rank, refreshed per use */
+  double (*sx)[2], (*sv)[2], (*sx0)[2];
+  FILE *csv;
+} flap_data;
+
+static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
+  flap_data *f = self->data;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->comm, NULL, "Scene flap (flexible flap in a periodic channel flow)", NULL);
+  PetscCall(PetscOptionsInt("-flap_nx", "Liquid lattice columns (periodic length = nx dx) [1]", NULL, f->nx, &f->nx, NULL));
+  PetscCall(PetscOptionsInt("-flap_ny", "Liquid lattice rows (channel width = ny dx) [1]", NULL, f->ny, &f->ny, NULL));
+  PetscCall(PetscOptionsReal("-flap_dx", "Particle spacing dx [m] (also the flap's bond rest length)", NULL, f->dx, &f->dx,
+                             NULL));
+  PetscCall(PetscOptionsInt("-flap_rows", "Flap height in rows above the wall [1]", NULL, f->flap_rows, &f->flap_rows,
+                            NULL));
+  PetscCall(PetscOptionsInt("-flap_column", "Lattice column of the flap's upstream layer [1]", NULL, f->flap_x,
+                            &f->flap_x, NULL));
+  PetscCall(PetscOptionsReal("-flap_density_ratio", "Flap particle mass / liquid particle mass [1]", NULL,
+                             f->solid_density_ratio, &f->solid_density_ratio, NULL));
+  PetscOptionsEnd();
+  PetscCheck(f->nx > 4 && f->ny > 4 && f->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_nx, -flap_ny must be > 4 and -flap_dx > 0");
+  PetscCheck(f->flap_rows >= 2 && f->flap_rows < f->ny - 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_rows must lie in [2, -flap_ny - 3] (got %" PetscInt_FMT ")", f->flap_rows);
+  PetscCheck(f->flap_x >= 0 && f->flap_x + 1 < f->nx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_column must lie in [0, -flap_nx - 2]");
+  PetscCheck(f->solid_density_ratio > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flap_density_ratio must be > 0");
+  s->dx = f->dx;
+  /* a viscous liquid so that the flow settles in a short run (override with -sph_*) */
+  s->sph.kernel = SPH_KERNEL_LUCY;
+  s->sph.h = 2.5 * f->dx;
+  s->sph.rho0 = 1000.0;
+  s->sph.c0 = 0.1;
+  s->sph.nu = 1e-4;
+  s->sph.eos = SPH_EOS_TAIT;
+  s->sph.density = SPH_DENSITY_CONTINUITY;
+  PetscCall(sim_enable_module(s, "sph", NULL));
+  PetscCall(sim_enable_module(s, "body_force", &f->body));
+  PetscCall(body_force_set_default(f->body, 0.5, 0.0));
+  PetscCall(topology_enable(s));
+  /* a soft flap: EI = K dx^3 + 2 k_a dx (doc/theory.md) */
+  PetscCall(bond_set_default(s, 2e3, f->dx, 0.5 * f->dx));
+  PetscCall(angle_set_default(s, 1e-5, 90.0));
+  PetscCall(sim_enable_module(s, "repulsion", &f->rep));
+  PetscCall(repulsion_set_default(f->rep, 1e-6, f->dx, 4, 2));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_build(scene *self, sim *s) {
+  flap_data *f = self->data;
+  const double dx = f->dx, m = s->sph.rho0 * dx * dx, zero[2] = {0, 0};
+  const PetscInt layers = (PetscInt)ceil(s->sph.h / dx - 1e-9);
+  PetscInt64 gid = 0;
+  PetscFunctionBeginUser;
+  s->dom.lo[0] = 0;
+  s->dom.hi[0] = f->nx * dx;
+  s->dom.periodic[0] = PETSC_TRUE;
+  s->dom.lo[1] = -layers * dx;
+  s->dom.hi[1] = (f->ny + layers) * dx;
+  s->dom.periodic[1] = PETSC_FALSE;
+  /* liquid first (gids 0 .. n_fluid-1), minus the flap's sites */
+  for (PetscInt j = 0; j < f->ny; j++)
+    for (PetscInt i = 0; i < f->nx; i++) {
+      if ((i == f->flap_x || i == f->flap_x + 1) && j < f->flap_rows) continue;
+      const double x[2] = {(i + 0.5) * dx, (j + 0.5) * dx};
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, s->sph.rho0, NULL));
+    }
+  f->n_fluid = gid;
+  /* walls; the flap's clamped row replaces the top lower-wall layer at its columns */
+  for (PetscInt k = 0; k < layers; k++)
+    for (PetscInt i = 0; i < f->nx; i++) {
+      const double below[2] = {(i + 0.5) * dx, -(k + 0.5) * dx}, above[2] = {(i + 0.5) * dx, (f->ny + k + 0.5) * dx};
+      if (!(k == 0 && (i == f->flap_x || i == f->flap_x + 1)))
+        PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, zero, m, s->sph.rho0, NULL));
+    }
+  /* the flap: columns of the strip run up the channel, layer 0 upstream */
+  bond_style style;
+  const bond_params *bp;
+  PetscCall(bond_get_params(s, &style, &bp));
+  PetscCheck(fabs(bp->r0[0] - dx) <= 1e-9 * dx, s->comm, PETSC_ERR_ARG_INCOMP,
+             "flap: -bond_r0 (%g m) must equal -flap_dx (%g m): the flap sits on the liquid's lattice", bp->r0[0], dx);
+  f->st.n = f->flap_rows + 1;
+  f->st.n_clamp = 1;
+  f->st.origin[0] = (f->flap_x + 0.5) * dx;
+  f->st.origin[1] = -0.5 * dx;
+  f->st.along[0] = 0;
+  f->st.along[1] = 1;
+  f->st.across[0] = 1;
+  f->st.across[1] = 0;
+  f->st.spacing = dx;
+  f->st.mass = f->solid_density_ratio * m;
+  f->st.rho = s->sph.rho0;
+  PetscCall(solid_strip_build(s, &f->st, &gid));
+  PetscCall(PetscCalloc1(f->n_fluid, &f->side));
+  PetscCall(PetscMalloc3(2 * f->st.n, &f->sx, 2 * f->st.n, &f->sv, 2 * f->st.n, &f->sx0));
+  PetscFunctionReturn(0);
+}
+
+/* mpi: x, v, x0 of every strip particle on every rank: each owner fills its
+ * rows, the others add zeros (exact), one Allreduce. Collective. */
+static PetscErrorCode flap_gather_strip(flap_data *f, sim *s) {
+  const particles *ps = &s->ps;
+  const PetscInt n = 2 * f->st.n;
+  double *buf;
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(6 * n, &buf));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    const PetscInt64 k = ps->gid[i] - f->st.first_gid;
+    if (k < 0 || k >= n) continue;
+    for (int d = 0; d < 2; d++) {
+      buf[6 * k + d] = ps->x[i][d];
+      buf[6 * k + 2 + d] = ps->v[i][d];
+      buf[6 * k + 4 + d] = ps->x0[i][d];
+    }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, (PetscMPIInt)(6 * n), MPI_DOUBLE, MPI_SUM, s->comm));
+  for (PetscInt k = 0; k < n; k++)
+    for (int d = 0; d < 2; d++) {
+      f->sx[k][d] = buf[6 * k + d];
+      f->sv[k][d] = buf[6 * k + 2 + d];
+      f->sx0[k][d] = buf[6 * k + 4 + d];
+    }
+  PetscCall(PetscFree(buf));
+  PetscFunctionReturn(0);
+}
+
+/* x of the flap's mid-line at height y (linear between rows), or NAN outside it */
+static double flap_midline_x(const flap_data *f, double y) {
+  const double(*x)[2] = (const double(*)[2])f->sx;
+  for (PetscInt c = 0; c + 1 < f->st.n; c++) {
+    const PetscInt a0 = 2 * c, a1 = 2 * c + 1, b0 = 2 * c + 2, b1 = 2 * c + 3;
+    const double ya = 0.5 * (x[a0][1] + x[a1][1]), yb = 0.5 * (x[b0][1] + x[b1][1]);
+    if (y < ya || y >= yb) continue;
+    const double xa = 0.5 * (x[a0][0] + x[a1][0]), xb = 0.5 * (x[b0][0] + x[b1][0]);
+    return xa + (xb - xa) * (y - ya) / (yb - ya);
+  }
+  return NAN;
+}
+
+static PetscErrorCode flap_count_crossings(flap_data *f, sim *s) {
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  signed char *now_all;
+  /* mpi: each owner sets its particles' side, one Allreduce makes the whole
+   * list; every rank then counts the same crossings */
+  PetscCall(PetscCalloc1(f->n_fluid, &now_all));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] != PTYPE_FLUID || ps->gid[i] >= f->n_fluid) continue;
+    const double xm = flap_midline_x(f, ps->x[i][1]);
+    signed char now = 0;
+    if (!isnan(xm)) {
+      double d[2] = {ps->x[i][0] - xm, 0};
+      domain_min_image(&s->dom, d);
+      if (fabs(d[0]) < 3 * f->dx) now = d[0] < 0 ? -1 : 1;
+    }
+    now_all[ps->gid[i]] = now;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, now_all, (PetscMPIInt)f->n_fluid, MPI_SIGNED_CHAR, MPI_SUM, s->comm));
+  for (PetscInt g = 0; g < f->n_fluid; g++) {
+    if (f->side[g] && now_all[g] && f->side[g] != now_all[g]) f->crossings++;
+    f->side[g] = now_all[g];
+  }
+  PetscCall(PetscFree(now_all));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_slip(flap_data *f, sim *s, double *slip, double *umax) {
+  const particles *ps = &s->ps;
+  double sum = 0, n = 0, u2 = 0;
+  const double near2 = 2.25 * f->dx * f->dx;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (ps->type[i] != PTYPE_FLUID) continue;
+    u2 = PetscMax(u2, ps->v[i][0] * ps->v[i][0] + ps->v[i][1] * ps->v[i][1]);
+    PetscInt best = -1;
+    double best_d2 = near2;
+    for (PetscInt k = 2 * f->st.n_clamp; k < 2 * f->st.n; k++) {
+      double d[2] = {ps->x[i][0] - f->sx[k][0], ps->x[i][1] - f->sx[k][1]};
+      domain_min_image(&s->dom, d);
+      const double d2 = d[0] * d[0] + d[1] * d[1];
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = k;
+      }
+    }
+    if (best < 0) continue;
+    sum += hypot(ps->v[i][0] - f->sv[best][0], ps->v[i][1] - f->sv[best][1]);
+    n += 1;
+  }
+  double in[2] = {sum, n}, out[2]; /* mpi */
+  PetscCallMPI(MPI_Allreduce(in, out, 2, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &u2, 1, MPI_DOUBLE, MPI_MAX, s->comm));
+  sum = out[0];
+  n = out[1];
+  *umax = sqrt(u2);
+  *slip = n > 0 && *umax > 0 ? sum / n / *umax : 0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_tip(flap_data *f, double d[2]) {
+  PetscFunctionBeginUser;
+  d[0] = d[1] = 0;
+  for (int l = 0; l < 2; l++) {
+    const PetscInt r = 2 * (f->st.n - 1) + l;
+    d[0] += 0.5 * (f->sx[r][0] - f->sx0[r][0]);
+    d[1] += 0.5 * (f->sx[r][1] - f->sx0[r][1]);
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_diagnose(scene *self, sim *s) {
+  flap_data *f = self->data;
+  double tip[2], slip, umax;
+  PetscFunctionBeginUser;
+  PetscCall(flap_gather_strip(f, s));
+  PetscCall(flap_count_crossings(f, s));
+  if (s->step == 0 && s->rank == 0) { /* mpi: rank 0 writes */
+    char path[PETSC_MAX_PATH_LEN];
+    PetscCall(sim_output_path(s, "flap.csv", path, sizeof(path)));
+    f->csv = fopen(path, "w");
+    PetscCheck(f->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    PetscCheck(fprintf(f->csv, "# flap: height %g m, dx %g m\nt,tip_dx,tip_dy,crossings,slip,u_max\n",
+                       f->flap_rows * f->dx, f->dx) > 0,
+               PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
+  } else if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
+    PetscFunctionReturn(0);
+  PetscCall(flap_tip(f, tip));
+  PetscCall(flap_slip(f, s, &slip, &umax));
+  if (s->rank == 0) /* mpi */
+  PetscCheck(fprintf(f->csv, "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%.6g,%.6g\n", s->t, tip[0], tip[1], f->crossings, slip,
+                     umax) > 0,
+             PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write flap.csv");
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_finish(scene *self, sim *s) {
+  flap_data *f = self->data;
+  const particles *ps = &s->ps;
+  char path[PETSC_MAX_PATH_LEN];
+  double tip[2], slip, umax;
+  PetscFunctionBeginUser;
+  PetscCall(flap_gather_strip(f, s));
+  PetscCall(flap_tip(f, tip));
+  PetscCall(flap_slip(f, s, &slip, &umax));
+  PetscCall(PetscPrintf(s->comm,
+                        "flap: tip displacement (%g, %g) m (%.3g of the height), fluid crossings %" PetscInt_FMT
+                        ", near-surface slip |v_f - v_flap|/u_max = %.3g, u_max = %g m/s\n",
+                        tip[0], tip[1], tip[0] / (f->flap_rows * f->dx), f->crossings, slip, umax));
+  if (f->csv) fclose(f->csv);
+  f->csv = NULL;
+  /* mpi: rows of every rank gathered to rank 0 (rank order) */
+  PetscMPIInt n_mine = (PetscMPIInt)(5 * ps->n_owned), *counts = NULL, *displs = NULL;
+  double *mine, *all = NULL;
+  PetscCall(PetscMalloc1(n_mine + 1, &mine));
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    double *r = mine + 5 * i;
+    r[0] = ps->x[i][0];
+    r[1] = ps->x[i][1];
+    r[2] = ps->v[i][0];
+    r[3] = ps->v[i][1];
+    r[4] = (double)ps->type[i];
+  }
+  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
+  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
+  if (s->rank == 0) {
+    displs[0] = 0;
+    for (PetscMPIInt r = 0; r < s->size; r++) displs[r + 1] = displs[r] + counts[r];
+    PetscCall(PetscMalloc1(displs[s->size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  PetscCall(PetscFree(mine));
+  if (s->rank == 0) {
+    PetscCall(sim_output_path(s, "flap-particles.csv", path, sizeof(path)));
+    FILE *out = fopen(path, "w");
+    PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    int ok = fprintf(out, "x,y,vx,vy,type\n") > 0;
+    for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 5)
+      ok = fprintf(out, "%.6g,%.6g,%.6g,%.6g,%d\n", all[k], all[k + 1], all[k + 2], all[k + 3], (int)all[k + 4]) > 0;
+    fclose(out);
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
+    PetscCall(PetscFree(all));
+    PetscCall(PetscFree2(counts, displs));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_destroy(scene *self) {
+  flap_data *f = self->data;
+  PetscFunctionBeginUser;
+  if (f->csv) fclose(f->csv);
+  PetscCall(PetscFree(f->side));
+  PetscCall(PetscFree3(f->sx, f->sv, f->sx0));
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode flap_scene_create(scene **out) {
+  flap_data *f;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(out));
+  PetscCall(PetscNew(&f));
+  f->nx = 40;
+  f->ny = 24;
+  f->dx = 1e-4;
+  f->flap_rows = 10;
+  f->flap_x = 12;
+  f->solid_density_ratio = 1.0;
+  (*out)->name = "flap";
+  (*out)->set_from_options = flap_set_from_options;
+  (*out)->build = flap_build;
+  (*out)->diagnose = flap_diagnose;
+  (*out)->finish = flap_finish;
+  (*out)->destroy = flap_destroy;
+  (*out)->data = f;
+  PetscFunctionReturn(0);
+}

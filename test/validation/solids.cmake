@@ -1,0 +1,34 @@
+# Solids (issue 3): the two-layer mass-spring cantilever against Timoshenko
+# beam theory (doc/theory.md, "Mass-spring leaflets as Timoshenko beams").
+# Static tip deflection: long/stiff-angled (bending ~100 %) to short/soft-angled
+# (shear 60-94 %), tolerance 1 %. First frequency: 0.5 % where bending
+# dominates; 8 % for the short soft beam, where the Dunkerley combination of
+# the bending and shear frequencies is only a lower bound.
+set(DMHS_CANTILEVER ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/cantilever.py --exe ${DMHS_EXE})
+foreach(case "41;0.01;0.01" "21;0.01;0.01" "11;0.001;0.01" "6;0.0001;0.01" "6;0.00001;0.01")
+  list(GET case 0 n)
+  list(GET case 1 ka)
+  list(GET case 2 tol)
+  add_test(NAME validation_cantilever_static_n${n}_ka${ka}
+           COMMAND ${DMHS_CANTILEVER} --mode static --n ${n} --ka ${ka} --tol ${tol}
+                   --outdir ${CMAKE_CURRENT_BINARY_DIR}/cantilever_static_n${n}_ka${ka})
+  set_tests_properties(validation_cantilever_static_n${n}_ka${ka} PROPERTIES LABELS validation TIMEOUT 120)
+endforeach()
+foreach(case "41;0.01;0.005" "21;0.01;0.005" "11;0.001;0.005" "6;0.0001;0.08")
+  list(GET case 0 n)
+  list(GET case 1 ka)
+  list(GET case 2 tol)
+  add_test(NAME validation_cantilever_frequency_n${n}_ka${ka}
+           COMMAND ${DMHS_CANTILEVER} --mode frequency --n ${n} --ka ${ka} --tol ${tol}
+                   --outdir ${CMAKE_CURRENT_BINARY_DIR}/cantilever_frequency_n${n}_ka${ka})
+  set_tests_properties(validation_cantilever_frequency_n${n}_ka${ka} PROPERTIES LABELS validation TIMEOUT 120)
+endforeach()
+
+# Flexible flap in a channel flow (quick variant, ~6 s; see doc/validation.md for the drift after 0.15 s): steady deflection
+# (tip varies < 2 % over the last 20 % of the run), zero fluid crossings,
+# near-surface relative speed |v_f - v_flap|/u_max < 0.25.
+add_test(NAME validation_flap_quick
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/flap.py --exe ${DMHS_EXE}
+                 --opts ${PROJECT_SOURCE_DIR}/input/flap-quick.opts --outdir ${CMAKE_CURRENT_BINARY_DIR}/flap-quick
+                 --steady 0.02 --slip 0.25)
+set_tests_properties(validation_flap_quick PROPERTIES LABELS validation TIMEOUT 120)
