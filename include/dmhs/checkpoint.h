@@ -17,7 +17,7 @@
 struct sim;
 
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
-#define CHECKPOINT_FORMAT_VERSION 1
+#define CHECKPOINT_FORMAT_VERSION 2 /* 2: x_build (neighbour lists with a skin) */
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;

@@ -28,6 +28,7 @@ typedef struct particles {
   double (*v_visc)[DMHS_DIM]; /* velocity seen by the viscous term (walls: extrapolated) [m/s] */
   double (*a)[DMHS_DIM];      /* acceleration [m/s^2] */
   double (*x0)[DMHS_DIM];     /* initial position, for displacement diagnostics [m] */
+  double (*x_build)[DMHS_DIM]; /* position at the last neighbour-list build [m] */
   double *mass;               /* [kg] per unit depth */
   double *rho;                /* density [kg/m^3] */
   double *drho;               /* density rate [kg/m^3/s] */

@@ -40,6 +40,10 @@ typedef struct sim {
   halo hal;
   cells cel;
   double pair_cutoff; /* largest pair reach among modules that need pairs */
+  double skin_ratio;  /* -neighbour_skin: Verlet skin as a fraction of the longest reach */
+  double skin;        /* [m]; ghosts and pairs reach this much further than any interaction */
+  double list_cutoff; /* pair_cutoff + skin: the pair list's radius */
+  PetscInt n_rebuilds;
   /* mpi: domain decomposition, migration check, debug and dump options */
   partition part;
   migrate_check mig;
@@ -72,6 +76,11 @@ PetscErrorCode sim_enable_module(sim *s, const char *name, module **out);
 PetscErrorCode sim_compute_forces(sim *s);
 /* Rebuilds ghosts and pairs for the current positions. */
 PetscErrorCode sim_rebuild_neighbours(sim *s);
+/* Per step: migrate + rebuild when due (or forced), else refresh the ghosts. */
+PetscErrorCode sim_update_neighbours(sim *s, PetscBool force);
+/* After a restart: rebuilds ghosts and pairs from the positions of the last
+ * build (x_build), as the uninterrupted run had them, then refreshes ghosts. */
+PetscErrorCode sim_rebuild_as_last_built(sim *s);
 /* Path of a file in the output directory. */
 PetscErrorCode sim_output_path(const sim *s, const char *name, char *path, size_t len);
 

@@ -21,6 +21,9 @@ static const field_desc table[] = {
     /* a and drho are needed by the first kick after a restart. */
     ROW(a, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "m/s^2"),
     ROW(x0, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "m"),
+    /* positions at the last neighbour build: decide the next rebuild, and let a
+     * restart rebuild the very same ghosts and pairs (bitwise restart) */
+    ROW(x_build, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT, "m"),
     ROW(mass, 1, FIELD_REAL, ALL, "kg"),
     ROW(rho, 1, FIELD_REAL, ALL, "kg/m^3"),
     ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "kg/m^3/s"),

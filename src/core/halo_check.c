@@ -31,7 +31,7 @@ static int halo_check_cmp_gid(const void *a, const void *b) {
 PetscErrorCode halo_check_pairs(sim *s) {
   const particles *ps = &s->ps;
   const PetscInt n_owned = ps->n_owned;
-  const double cut2 = s->pair_cutoff * s->pair_cutoff;
+  const double cut = PetscMax(s->pair_cutoff, s->list_cutoff), cut2 = cut * cut; /* the list radius */
   PetscMPIInt n_mine = (PetscMPIInt)(4 * n_owned), *counts, *displs;
   double *mine, *all;
   PetscInt64 *listed, *found;

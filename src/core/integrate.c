@@ -134,6 +134,12 @@ PetscErrorCode integrate_check_state(sim *s) {
     else if (!isfinite(ps->v[i][0]) || !isfinite(ps->v[i][1])) bad = "velocity";
     else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0) bad = "density";
     else if (!isfinite(ps->p[i])) bad = "pressure";
+    PetscCheck(bad || domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
+               "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
+               ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
+               "(try a smaller -dt)",
+               ps->gid[i], s->step, s->t, ps->x[i][0], ps->x[i][1], s->dom.lo[0], s->dom.hi[0], s->dom.lo[1],
+               s->dom.hi[1]);
     PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_FP,
                "run blew up at step %" PetscInt_FMT ", t = %g s: particle gid %" PetscInt64_FMT
                " (type %" PetscInt_FMT ") has a non-finite or invalid %s (x = %g %g, v = %g %g, rho = %g); "

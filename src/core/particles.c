@@ -53,6 +53,7 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
   for (int k = 0; k < DMHS_DIM; k++) {
     ps->x[i][k] = x[k];
     ps->x0[i][k] = x[k];
+    ps->x_build[i][k] = x[k];
     ps->v[i][k] = v[k];
     ps->v_est[i][k] = v[k];
     ps->v_visc[i][k] = v[k];

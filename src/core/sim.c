@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/events.h"
 #include "dmhs/registry.h"
 #include "dmhs/integrate.h"
@@ -37,8 +38,14 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscCall(PetscOptionsReal("-progress_interval", "Physical time between progress lines [s] (0 = t_end/20)",
                              NULL, s->progress_interval, &s->progress_interval, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+  PetscCall(PetscOptionsReal("-neighbour_skin",
+                             "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
+                             "and pairs every step)",
+                             NULL, s->skin_ratio, &s->skin_ratio, NULL));
   PetscOptionsEnd();
   PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)", s->t_end);
+  PetscCheck(s->skin_ratio >= 0 && s->skin_ratio <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
   PetscCheck(s->dt >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt must be >= 0 (got %g; 0 = automatic)", s->dt);
   PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_interval must be >= 0 (got %g)",
              s->output_interval);
@@ -131,10 +138,82 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
       lo[k] = s->dom.lo[k] - s->hal.width;
       hi[k] = s->dom.hi[k] + s->hal.width;
     }
-    PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, s->pair_cutoff));
+    PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, PetscMax(s->pair_cutoff, s->list_cutoff)));
     PetscCall(PetscLogEventEnd(events.pairs, 0, 0, 0, 0));
     if (s->debug_halo) PetscCall(halo_check_pairs(s)); /* mpi */
   }
+  PetscFunctionReturn(0);
+}
+
+/* Names of every FIELD_GHOST field: what a ghost refresh between builds copies. */
+static const char *const *sim_ghost_fields(int *n) {
+  static const char *names[32];
+  static int count = -1;
+  if (count < 0) {
+    size_t nf;
+    const field_desc *t = fields_table(&nf);
+    count = 0;
+    for (size_t k = 0; k < nf && count < 32; k++)
+      if (t[k].flags & FIELD_GHOST) names[count++] = t[k].name;
+  }
+  *n = count;
+  return names;
+}
+
+/* Verlet lists: rebuild when a particle may have moved half the skin since the
+ * last build (then a pair can have come from outside the list radius into the
+ * interaction range), or when the partition is due for its balance check. The
+ * order of every particle's sums follows the cells of the last build, so the
+ * build steps must not depend on the rank count. */
+static PetscErrorCode sim_needs_rebuild(sim *s, PetscBool *rebuild) {
+  const particles *ps = &s->ps;
+  double local = 0, global;
+  PetscFunctionBeginUser;
+  *rebuild = PETSC_TRUE;
+  if (s->skin <= 0) PetscFunctionReturn(0);
+  /* on every rank count alike, so that runs stay bitwise rank-count invariant */
+  if (s->part.interval > 0 && s->step % s->part.interval == 0) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    const double dx = ps->x[i][0] - ps->x_build[i][0], dy = ps->x[i][1] - ps->x_build[i][1];
+    local = PetscMax(local, dx * dx + dy * dy);
+  }
+  PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, s->comm));
+  *rebuild = global > 0.25 * s->skin * s->skin ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
+  PetscBool rebuild = force;
+  PetscFunctionBeginUser;
+  if (!rebuild) PetscCall(sim_needs_rebuild(s, &rebuild));
+  if (rebuild) {
+    PetscCall(migrate_particles(s));
+    PetscCall(sim_rebuild_neighbours(s));
+    PetscCall(PetscArraycpy(s->ps.x_build, s->ps.x, s->ps.n_owned));
+    s->n_rebuilds++;
+  } else {
+    int n;
+    const char *const *names = sim_ghost_fields(&n);
+    PetscCall(halo_forward(&s->hal, &s->ps, names, n));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_rebuild_as_last_built(sim *s) {
+  particles *ps = &s->ps;
+  int n;
+  const char *const *names = sim_ghost_fields(&n);
+  PetscFunctionBeginUser;
+  /* build with x_build in the x slot; both migrate together, so rows stay paired */
+  double(*current)[DMHS_DIM] = ps->x;
+  ps->x = ps->x_build;
+  ps->x_build = current;
+  PetscCall(migrate_particles(s));
+  PetscCall(sim_rebuild_neighbours(s));
+  current = ps->x_build;
+  ps->x_build = ps->x;
+  ps->x = current;
+  PetscCall(halo_forward(&s->hal, ps, names, n));
   PetscFunctionReturn(0);
 }
 
@@ -182,6 +261,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCallMPI(MPI_Comm_rank(comm, &s->rank));
   PetscCallMPI(MPI_Comm_size(comm, &s->size));
   s->t_end = 1.0;
+  s->skin_ratio = 0.1;
   s->preflight = PREFLIGHT_ERROR;
   PetscCall(PetscStrncpy(s->output_dir, "output", sizeof(s->output_dir)));
   PetscCall(particles_create(&s->ps));
@@ -217,8 +297,10 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
     reach = PetscMax(reach, s->modules[m]->reach);
     if (s->modules[m]->needs & MODULE_NEEDS_PAIRS) s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
   }
-  PetscCall(domain_check_ghost_width(&s->dom, reach));
-  PetscCall(halo_create(&s->hal, reach, s->comm));
+  s->skin = s->skin_ratio * reach;
+  s->list_cutoff = s->pair_cutoff > 0 ? s->pair_cutoff + s->skin : 0;
+  PetscCall(domain_check_ghost_width(&s->dom, reach + s->skin));
+  PetscCall(halo_create(&s->hal, reach + s->skin, s->comm));
   PetscCall(partition_setup(&s->part, s)); /* mpi: each rank keeps its share of the scene */
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->setup) PetscCall(s->modules[m]->setup(s->modules[m], s));
@@ -229,8 +311,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   s->next_progress_t = s->progress_interval;
 
   /* forces at t = 0 for the first kick */
-  PetscCall(migrate_particles(s));
-  PetscCall(sim_rebuild_neighbours(s));
+  PetscCall(sim_update_neighbours(s, PETSC_TRUE));
   PetscCall(sim_compute_forces(s));
   PetscCall(integrate_check_state(s));
   PetscCall(io_restart(s)); /* io: with -restart, the checkpoint's state replaces the built one */
@@ -256,8 +337,7 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(integrate_first_half(s));
     s->step++;
     s->t = s->step * s->dt; /* no accumulated round-off in t */
-    PetscCall(migrate_particles(s));
-    PetscCall(sim_rebuild_neighbours(s));
+    PetscCall(sim_update_neighbours(s, PETSC_FALSE));
     PetscCall(sim_compute_forces(s));
     PetscCall(integrate_second_half(s));
     PetscCall(integrate_check_state(s));

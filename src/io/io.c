@@ -154,8 +154,7 @@ PetscErrorCode io_restart(sim *s) {
   if (io->restart_file[0]) {
     const double dt_options = s->dt;
     PetscCall(checkpoint_read(s, io->restart_file));
-    PetscCall(migrate_particles(s));
-    PetscCall(sim_rebuild_neighbours(s));
+    PetscCall(sim_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
     PetscCall(PetscPrintf(s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",

@@ -36,8 +36,9 @@ PetscErrorCode progress_summary(sim *s) {
   PetscCallMPI(MPI_Allreduce(&n_owned, &n_total, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscPrintf(s->comm,
                         "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
-                        " steps to t = %g s, step loop %.3f s, particle-steps/s: %.4e\n",
-                        s->scn->name, n_total, (int)s->size, s->step, s->t, s->loop_seconds,
+                        " steps to t = %g s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
+                        "particle-steps/s: %.4e\n",
+                        s->scn->name, n_total, (int)s->size, s->step, s->t, s->n_rebuilds, s->loop_seconds,
                         particle_steps_per_second(s, s->loop_seconds)));
   PetscFunctionReturn(0);
 }

@@ -18,9 +18,10 @@ SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
     if (ps->type[i] != PTYPE_WALL) rho[i] = mass[i] * w0;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
-    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];
+    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], r2 = dx * dx + dy * dy;
+    if (r2 * inv_h * inv_h >= 1.0) continue; /* in the list's skin only */
     double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(dx * dx + dy * dy), &w, &dwdr);
+    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r2), &w, &dwdr);
     /* wall rows are overwritten by the wall pass; ghost rows are refreshed below */
     rho[i] += mass[j] * w;
     rho[j] += mass[i] * w;

@@ -29,11 +29,13 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
   const double *restrict P = A->P, *restrict inv_rho = A->inv_rho;
   double(*restrict a)[2] = A->a;
   double *restrict drho = A->drho;
-  const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum;
+  const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum, h2 = h * h;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double rij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    const double r = sqrt(rij[0] * rij[0] + rij[1] * rij[1]);
+    const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
+    if (r2 >= h2) continue; /* listed within the skin, not (yet) interacting */
+    const double r = sqrt(r2);
     double w, dwdr;
     sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};

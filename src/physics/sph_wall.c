@@ -55,8 +55,10 @@ SPH_INLINE void wall_sums(sph_kernel_kind kernel, sim *s, sph_wall_work *W) {
       f = pi[k];
     }
     const double r_wf[2] = {ps->x[wl][0] - ps->x[f][0], ps->x[wl][1] - ps->x[f][1]};
+    const double r2 = r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1];
+    if (r2 * inv_h * inv_h >= 1.0) continue; /* in the list's skin only */
     double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1]), &w, &dwdr);
+    sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r2), &w, &dwdr);
     W->sum_w[wl] += w;
     W->sum_v[wl][0] += ps->v_est[f][0] * w;
     W->sum_v[wl][1] += ps->v_est[f][1] * w;
