@@ -34,6 +34,9 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
                              sp->av_alpha, &sp->av_alpha, NULL));
   PetscCall(PetscOptionsReal("-sph_av_beta", "Monaghan artificial viscosity beta [1]", NULL,
                              sp->av_beta, &sp->av_beta, NULL));
+  PetscCall(PetscOptionsReal("-sph_p_background",
+                             "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b (suppresses tensile voids)",
+                             NULL, sp->p_background, &sp->p_background, NULL));
   PetscOptionsEnd();
   PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
   PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)", sp->rho0);
@@ -41,6 +44,8 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCheck(sp->nu >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_nu must be >= 0 (got %g)", sp->nu);
   PetscCheck(sp->av_alpha >= 0 && sp->av_beta >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_av_alpha and -sph_av_beta must be >= 0 (got %g, %g)", sp->av_alpha, sp->av_beta);
+  PetscCheck(sp->p_background >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_p_background must be >= 0 (got %g Pa)",
+             sp->p_background);
   self->reach = sp->h;
   s->sph_enabled = PETSC_TRUE;
   PetscFunctionReturn(0);
@@ -92,8 +97,8 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
   (void)self;
   PetscCall(PetscViewerASCIIPrintf(v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
                                    sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
-  PetscCall(PetscViewerASCIIPrintf(v, "sph: eos %s, density %s, artificial viscosity alpha = %g beta = %g, walls: Adami extrapolation\n",
-                                   sph_eos_names[sp->eos], sph_density_names[sp->density], sp->av_alpha, sp->av_beta));
+  PetscCall(PetscViewerASCIIPrintf(v, "sph: eos %s, background pressure %g Pa, density %s, artificial viscosity alpha = %g beta = %g, walls: Adami extrapolation\n",
+                                   sph_eos_names[sp->eos], sp->p_background, sph_density_names[sp->density], sp->av_alpha, sp->av_beta));
   PetscFunctionReturn(0);
 }
 

@@ -7,7 +7,7 @@
  *                                          the profile continues antisymmetrically
  *                                          through the wall, so v = v_w exactly on it)
  *   p_w      = [sum_f p_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf] / sum_f W_wf
- *   rho_w    = EOS^-1(p_w)
+ *   rho_w    = EOS^-1(p_w - p_b)       (p_b: background pressure, sph_eos.h)
  * with r_wf = x_w - x_f, g the body acceleration on the liquid and a_w = 0
  * (walls move at constant prescribed velocity). A wall particle with no
  * liquid within the support keeps v_visc = v_w, rho = rho0 and p = EOS(rho0).
@@ -101,14 +101,14 @@ PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *W) {
     if (ps->type[i] != PTYPE_WALL) continue;
     if (W->sum_w[i] <= 0.0) {
       ps->rho[i] = s->sph.rho0;
-      ps->p[i] = sph_eos_pressure(s->sph.eos, s->sph.rho0, s->sph.rho0, s->sph.c0);
+      ps->p[i] = sph_eos_pressure_bg(&s->sph, s->sph.rho0);
       continue;
     }
     const double inv = 1.0 / W->sum_w[i];
     ps->v_visc[i][0] = 2.0 * ps->v[i][0] - W->sum_v[i][0] * inv;
     ps->v_visc[i][1] = 2.0 * ps->v[i][1] - W->sum_v[i][1] * inv;
     ps->p[i] = (W->sum_p[i] + g[0] * W->sum_rho_r[i][0] + g[1] * W->sum_rho_r[i][1]) * inv;
-    ps->rho[i] = sph_eos_density(s->sph.eos, ps->p[i], s->sph.rho0, s->sph.c0);
+    ps->rho[i] = sph_eos_density_bg(&s->sph, ps->p[i]);
   }
   PetscCall(PetscLogFlops(30.0 * (double)s->cel.n_pairs));
   PetscCall(PetscLogEventEnd(events.sph_wall, 0, 0, 0, 0));

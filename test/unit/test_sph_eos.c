@@ -2,7 +2,9 @@
  *   - Tait: p(rho0) = 0 and p = B((rho/rho0)^7 - 1), B = c0^2 rho0 / 7, at several densities;
  *   - linear p = c0^2 rho and linear-shifted p = c0^2 (rho - rho0);
  *   - sph_eos_density inverts sph_eos_pressure for every kind (round trip to 1e-12 relative);
- *   - Tait tension below -B gives a small positive density, not NaN. */
+ *   - Tait tension below -B gives a small positive density, not NaN;
+ *   - the background pressure p_b shifts p by exactly p_b for every kind (p_b = 0: unchanged),
+ *     and sph_eos_density_bg inverts sph_eos_pressure_bg. */
 #include "unit_common.h"
 #include "physics/sph_eos.h"
 
@@ -56,12 +58,27 @@ static void test_tait_tension_clamped(void **state) {
   assert_true(isfinite(rho) && rho > 0.0 && rho < 0.1 * rho0);
 }
 
+static void test_background_pressure(void **state) {
+  (void)state;
+  const sph_eos_kind kinds[] = {SPH_EOS_TAIT, SPH_EOS_LINEAR, SPH_EOS_LINEAR_SHIFTED};
+  for (size_t k = 0; k < 3; k++)
+    for (size_t i = 0; i < N_RHO; i++) {
+      const double p = sph_eos_pressure(kinds[k], rhos[i], rho0, c0);
+      sph_params off = {.rho0 = rho0, .c0 = c0, .eos = kinds[k]}, on = off;
+      on.p_background = 250.0;
+      assert_true(sph_eos_pressure_bg(&off, rhos[i]) == p);
+      assert_close(sph_eos_pressure_bg(&on, rhos[i]), p + 250.0, 1e-12 * (fabs(p) + 250.0));
+      assert_close(sph_eos_density_bg(&on, sph_eos_pressure_bg(&on, rhos[i])), rhos[i], 1e-12 * rhos[i]);
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_tait),
       cmocka_unit_test(test_linear),
       cmocka_unit_test(test_density_inverts_pressure),
       cmocka_unit_test(test_tait_tension_clamped),
+      cmocka_unit_test(test_background_pressure),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -24,11 +24,12 @@ foreach(case "41;0.01;0.005" "21;0.01;0.005" "11;0.001;0.005" "6;0.0001;0.08")
   set_tests_properties(validation_cantilever_frequency_n${n}_ka${ka} PROPERTIES LABELS validation TIMEOUT 120)
 endforeach()
 
-# Flexible flap in a channel flow (quick variant, ~6 s; see doc/validation.md for the drift after 0.15 s): steady deflection
-# (tip varies < 2 % over the last 20 % of the run), zero fluid crossings,
-# near-surface relative speed |v_f - v_flap|/u_max < 0.25.
+# Flexible flap in a channel flow (quick variant, 0.8 s, ~25 s on one core;
+# doc/validation.md "Flexible flap"). Measured: tip 0.125 of the height, mean
+# of the last quarter vs the quarter before 0.44 %, wander over the last
+# quarter 5.0 %, 0 crossings, slip on the faces 0.026 u_max. Tolerances ~2x.
 add_test(NAME validation_flap_quick
          COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/flap.py --exe ${DMHS_EXE}
                  --opts ${PROJECT_SOURCE_DIR}/input/flap-quick.opts --outdir ${CMAKE_CURRENT_BINARY_DIR}/flap-quick
-                 --steady 0.02 --slip 0.25)
-set_tests_properties(validation_flap_quick PROPERTIES LABELS validation TIMEOUT 120)
+                 --drift 0.01 --steady 0.08 --slip 0.05 --min-deflection 0.05)
+set_tests_properties(validation_flap_quick PROPERTIES LABELS validation TIMEOUT 180)
