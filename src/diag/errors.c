@@ -5,6 +5,7 @@
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/errors.h"
+#include "dmhs/gather.h"
 #include "dmhs/checkpoint.h"
 
 PetscErrorCode errors_set_from_options(errors *e, sim *s) {
@@ -97,7 +98,7 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   double *mine, *all = NULL;
-  PetscMPIInt n_mine = 0, *counts = NULL, *displs = NULL;
+  size_t n_mine = 0, n_all;
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(4 * particles_count_type(ps, PTYPE_FLUID) + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++)
@@ -107,27 +108,19 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
       mine[n_mine++] = ps->v[i][0];
       mine[n_mine++] = e->exact(ps->x[i][1], s->t, e->ctx);
     }
-  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
-  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
-  if (s->rank == 0) {
-    displs[0] = 0;
-    for (PetscMPIInt r = 0; r < s->size; r++) displs[r + 1] = displs[r] + counts[r];
-    PetscCall(PetscMalloc1(displs[s->size] + 1, &all));
-  }
-  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &n_all));
   PetscCall(PetscFree(mine));
   if (s->rank != 0) PetscFunctionReturn(0);
-  qsort(all, (size_t)displs[s->size] / 4, 4 * sizeof(double), errors_compare_gid);
+  qsort(all, n_all / 4, 4 * sizeof(double), errors_compare_gid);
   PetscCall(errors_profile_path(s, t_report, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
   int ok = fprintf(f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
-  for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 4)
+  for (size_t k = 0; k < n_all && ok; k += 4)
     ok = fprintf(f, "%.9e,%.9e,%.9e\n", all[k + 1], all[k + 2], all[k + 3]) > 0;
   ok = (fclose(f) == 0) && ok;
   PetscCall(PetscFree(all));
-  PetscCall(PetscFree2(counts, displs));
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
   PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
              path, strerror(errno));

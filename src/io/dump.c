@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/gather.h"
 #include "dmhs/dump.h"
 
 #define DUMP_COLS 7 /* gid, type, x, y, vx, vy, rho: all stored as doubles (gids < 2^53) */
@@ -26,11 +27,10 @@ static int dump_compare(const void *a, const void *b) {
 PetscErrorCode dump_final(sim *s) {
   const particles *ps = &s->ps;
   double *mine, *all = NULL;
-  PetscMPIInt n_mine, *counts = NULL, *displs = NULL;
+  size_t n_mine, total;
   PetscFunctionBeginUser;
   if (!s->dump_final[0]) PetscFunctionReturn(0);
-  PetscCheck((size_t)ps->n_owned * DUMP_COLS < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "-dump_final: too many particles");
-  n_mine = (PetscMPIInt)(ps->n_owned * DUMP_COLS);
+  n_mine = (size_t)ps->n_owned * DUMP_COLS;
   PetscCall(PetscMalloc1(n_mine + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     double *row = mine + DUMP_COLS * i;
@@ -42,19 +42,7 @@ PetscErrorCode dump_final(sim *s) {
     row[5] = ps->v[i][1];
     row[6] = ps->rho[i];
   }
-  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
-  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
-  size_t total = 0;
-  if (s->rank == 0) {
-    displs[0] = 0;
-    for (PetscMPIInt r = 0; r < s->size; r++) {
-      total += (size_t)counts[r];
-      PetscCheck(total < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "-dump_final: too many particles");
-      displs[r + 1] = (PetscMPIInt)total;
-    }
-    PetscCall(PetscMalloc1(total + 1, &all));
-  }
-  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &total));
   if (s->rank == 0) {
     char tmp[PETSC_MAX_PATH_LEN + 8];
     const size_t n = total / DUMP_COLS;
@@ -72,7 +60,6 @@ PetscErrorCode dump_final(sim *s) {
     PetscCheck(rename(tmp, s->dump_final) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "-dump_final: cannot rename %s to %s: %s", tmp, s->dump_final, strerror(errno));
     PetscCall(PetscFree(all));
-    PetscCall(PetscFree2(counts, displs));
   }
   PetscCall(PetscFree(mine));
   PetscFunctionReturn(0);

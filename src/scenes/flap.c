@@ -16,6 +16,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/gather.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
@@ -339,7 +340,8 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
   if (f->csv) fclose(f->csv);
   f->csv = NULL;
   /* mpi: rows of every rank gathered to rank 0 (rank order) */
-  PetscMPIInt n_mine = (PetscMPIInt)(5 * ps->n_owned), *counts = NULL, *displs = NULL;
+  const size_t n_mine = 5 * (size_t)ps->n_owned;
+  size_t n_all;
   double *mine, *all = NULL;
   PetscCall(PetscMalloc1(n_mine + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -350,26 +352,18 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
     r[3] = ps->v[i][1];
     r[4] = (double)ps->type[i];
   }
-  if (s->rank == 0) PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
-  PetscCallMPI(MPI_Gather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, 0, s->comm));
-  if (s->rank == 0) {
-    displs[0] = 0;
-    for (PetscMPIInt r = 0; r < s->size; r++) displs[r + 1] = displs[r] + counts[r];
-    PetscCall(PetscMalloc1(displs[s->size] + 1, &all));
-  }
-  PetscCallMPI(MPI_Gatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, s->comm));
+  PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &n_all));
   PetscCall(PetscFree(mine));
   if (s->rank == 0) {
     PetscCall(sim_output_path(s, "flap-particles.csv", path, sizeof(path)));
     FILE *out = fopen(path, "w");
     PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
     int ok = fprintf(out, "x,y,vx,vy,type\n") > 0;
-    for (PetscMPIInt k = 0; k < displs[s->size] && ok; k += 5)
+    for (size_t k = 0; k < n_all && ok; k += 5)
       ok = fprintf(out, "%.6g,%.6g,%.6g,%.6g,%d\n", all[k], all[k + 1], all[k + 2], all[k + 3], (int)all[k + 4]) > 0;
     fclose(out);
     PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
     PetscCall(PetscFree(all));
-    PetscCall(PetscFree2(counts, displs));
   }
   PetscFunctionReturn(0);
 }
