@@ -1,8 +1,8 @@
 /* Domain decomposition: a coarse grid of cells over the box (edge >= the ghost
  * width), each cell owned by one rank. Rank 0 partitions the cell graph,
- * weighted by particle count, with METIS and broadcasts the owner of every
+ * weighted by work (particles and their bonded partners), with METIS and broadcasts the owner of every
  * cell, so that all ranks agree bit for bit. Repartitions when the load
- * imbalance (max/mean owned particles) passes a threshold. partition.c is the
+ * imbalance (max/mean owned work: particles + bonded partners) passes a threshold. partition.c is the
  * only file that calls METIS. */
 #ifndef DMHS_PARTITION_H
 #define DMHS_PARTITION_H
@@ -25,7 +25,7 @@ typedef struct partition {
   double imbalance_max;   /* -partition_imbalance: repartition above this max/mean */
   PetscInt interval;      /* -partition_interval: steps between imbalance checks (0 = never) */
   /* state */
-  double imbalance;       /* max/mean owned count at the last check */
+  double imbalance;       /* max/mean owned work (particles + bonded partners) at the last check */
   PetscInt n_repartitions;
   PetscInt64 edge_cut;    /* METIS objective (cut edges) of the current partition */
 } partition;

@@ -66,6 +66,9 @@ PetscErrorCode topology_destroy(topology **t);
 /* Scene builders add the structure by global id. */
 PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type);
 PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk, PetscInt type);
+/* Number of bonded (1-2 and 1-3) partners of a particle: its bonded work, for
+ * the partition's weights. */
+PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count);
 /* Local entries from gids, after a ghost build (called by sim_rebuild_neighbours). */
 PetscErrorCode topology_resolve(topology *t, const particles *ps);
 /* True when pair (i, j) (local rows) is excluded from pair sums. */

@@ -2,9 +2,11 @@
  *
  * The box is covered by nc[0] x nc[1] cells of edge >= the ghost width, so a
  * particle's ghosts can only be needed by the owners of its 3 x 3 neighbour
- * cells (halo.c). Vertex weight of a cell = 16 x (particles in it) + 1: the
- * constant keeps empty cells (the intestine's and vein's empty regions) valid
- * METIS vertices without letting them weigh like occupied ones. Edges join the
+ * cells (halo.c). Vertex weight of a cell = sum over its particles of
+ * (16 + 4 x bonded partners) + 1: a particle's SPH pairs cost about 16 units,
+ * each bond or angle partner about 4 more; the constant keeps empty cells (the
+ * intestine's and vein's empty regions) valid METIS vertices without letting
+ * them weigh like occupied ones. Edges join the
  * 8 neighbours of a cell, wrapping along periodic directions.
  *
  * Determinism: rank 0 alone calls METIS (fixed seed) and broadcasts the owner
@@ -15,6 +17,16 @@
 #include "dmhs/events.h"
 
 #define PARTITION_WEIGHT_PER_PARTICLE 16
+#define PARTITION_WEIGHT_PER_BONDED_PARTNER 4
+
+/* A particle's share of a cell's vertex weight: its pairs plus its bonded work. */
+static PetscErrorCode partition_particle_work(sim *s, PetscInt64 gid, PetscInt *work) {
+  PetscInt partners = 0;
+  PetscFunctionBeginUser;
+  if (s->topo) PetscCall(topology_partner_count(s->topo, gid, &partners));
+  *work = PARTITION_WEIGHT_PER_PARTICLE + PARTITION_WEIGHT_PER_BONDED_PARTNER * partners;
+  PetscFunctionReturn(0);
+}
 
 /* The one checked wrapper around a METIS return code. */
 static PetscErrorCode partition_metis_check(int status, const char *call) {
@@ -103,7 +115,7 @@ static void partition_mark_frontier(partition *p, const sim *s) {
     }
 }
 
-/* Rank 0 partitions with `counts` (its own array; other ranks pass NULL) and
+/* Rank 0 partitions with `counts` (work per cell; other ranks pass NULL) and
  * broadcasts the owners. A METIS failure on rank 0 is reported on every rank. */
 static PetscErrorCode partition_run(partition *p, sim *s, const PetscInt *counts) {
   PetscInt64 status[2] = {0, 0}; /* error flag, edge cut */
@@ -115,7 +127,7 @@ static PetscErrorCode partition_run(partition *p, sim *s, const PetscInt *counts
     idx_t options[METIS_NOPTIONS];
     PetscCall(partition_graph(p, s->dom.periodic, &xadj, &adjncy));
     PetscCall(PetscMalloc2(p->n_cells, &vwgt, p->n_cells, &part));
-    for (PetscInt c = 0; c < p->n_cells; c++) vwgt[c] = (idx_t)(PARTITION_WEIGHT_PER_PARTICLE * counts[c] + 1);
+    for (PetscInt c = 0; c < p->n_cells; c++) vwgt[c] = (idx_t)(counts[c] + 1); /* each cell's work */
     PetscCall(partition_metis_check(METIS_SetDefaultOptions(options), "SetDefaultOptions"));
     options[METIS_OPTION_NUMBERING] = 0;
     options[METIS_OPTION_SEED] = 7; /* fixed: the same counts always give the same partition */
@@ -178,7 +190,9 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
     for (PetscInt i = 0; i < ps->n_owned; i++) {
       double x[DMHS_DIM] = {ps->x[i][0], ps->x[i][1]};
       domain_wrap(&s->dom, x);
-      counts[partition_cell_of(p, x)]++;
+      PetscInt work = 0;
+      PetscCall(partition_particle_work(s, ps->gid[i], &work));
+      counts[partition_cell_of(p, x)] += work;
     }
   }
   PetscCall(partition_run(p, s, counts));
@@ -215,7 +229,11 @@ PetscErrorCode partition_compute(partition *p, sim *s) {
   if (s->size == 1) PetscFunctionReturn(0);
   PetscCall(PetscCalloc1(p->n_cells, &local));
   if (s->rank == 0) PetscCall(PetscMalloc1(p->n_cells, &counts));
-  for (PetscInt i = 0; i < ps->n_owned; i++) local[partition_cell_of(p, ps->x[i])]++;
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    PetscInt work = 0;
+    PetscCall(partition_particle_work(s, ps->gid[i], &work));
+    local[partition_cell_of(p, ps->x[i])] += work;
+  }
   PetscCallMPI(MPI_Reduce(local, counts, (PetscMPIInt)p->n_cells, MPIU_INT, MPI_SUM, 0, s->comm));
   PetscCall(partition_run(p, s, counts));
   PetscCall(PetscFree(local));
@@ -225,11 +243,17 @@ PetscErrorCode partition_compute(partition *p, sim *s) {
 }
 
 PetscErrorCode partition_measure_imbalance(partition *p, sim *s) {
-  PetscInt64 local = s->ps.n_owned, max, total;
+  PetscInt64 local = 0, max, total;
   PetscFunctionBeginUser;
   if (s->size == 1) {
     p->imbalance = 1.0;
     PetscFunctionReturn(0);
+  }
+  /* in the partition's own currency: the work its vertex weights balance */
+  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+    PetscInt work = 0;
+    PetscCall(partition_particle_work(s, s->ps.gid[i], &work));
+    local += work;
   }
   PetscCallMPI(MPI_Allreduce(&local, &max, 1, MPIU_INT64, MPI_MAX, s->comm));
   PetscCallMPI(MPI_Allreduce(&local, &total, 1, MPIU_INT64, MPI_SUM, s->comm));

@@ -249,6 +249,20 @@ static PetscInt topology_nearest(const topology *t, const particles *ps, PetscIn
   return best;
 }
 
+PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count) {
+  PetscFunctionBeginUser;
+  if (t->dirty) PetscCall(topology_build_tables(t));
+  *count = 0;
+  PetscInt lo = 0, hi = t->n_gids;
+  while (lo < hi) {
+    const PetscInt mid = (lo + hi) / 2;
+    if (t->gids[mid] < gid) lo = mid + 1;
+    else hi = mid;
+  }
+  if (lo < t->n_gids && t->gids[lo] == gid) *count = t->ex_start[lo + 1] - t->ex_start[lo];
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode topology_resolve(topology *t, const particles *ps) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
