@@ -91,8 +91,8 @@ PetscErrorCode registry_create_module(const char *name, module **out) {
 
 /* Every scene's options pass (which enables its modules, with the scene's
  * defaults), then each module's options once. */
-PetscErrorCode registry_print_help(sim *s) {
-  PetscBool printed[N_MODULES] = {PETSC_FALSE};
+/* One options pass of every scene; prints the enabled modules not printed yet. */
+static PetscErrorCode registry_help_pass(sim *s, PetscBool printed[]) {
   PetscFunctionBeginUser;
   for (size_t k = 0; k < N_SCENES; k++) {
     scene *scn;
@@ -113,6 +113,21 @@ PetscErrorCode registry_print_help(sim *s) {
     s->n_modules = 0;
     PetscCall(scn->destroy(scn));
     PetscCall(PetscFree(scn));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode registry_print_help(sim *s) {
+  PetscBool printed[N_MODULES] = {PETSC_FALSE}, user_style;
+  PetscFunctionBeginUser;
+  PetscCall(registry_help_pass(s, printed));
+  /* modules only an option enables (the nonlinear bond: -bond_style nonlinear)
+   * get a second pass with that choice made, so -help lists every option */
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-bond_style", &user_style));
+  if (!user_style) {
+    PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
+    PetscCall(registry_help_pass(s, printed));
+    PetscCall(PetscOptionsClearValue(NULL, "-bond_style"));
   }
   PetscFunctionReturn(0);
 }

@@ -7,7 +7,7 @@ set(QUICK -options_file ${DMHS_INPUT}/poiseuille-quick.opts -quiet)
 
 add_test(NAME cli_help COMMAND ${DMHS_EXE} -help)
 set_tests_properties(cli_help PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "-scene <now poiseuille.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx")
+  PASS_REGULAR_EXPRESSION "-scene <now poiseuille.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
 
 function(dmhs_cli_fail name regex)
   add_test(NAME ${name} COMMAND ${DMHS_EXPECT_FAIL} "${regex}" -- ${DMHS_EXE} ${ARGN})
