@@ -66,6 +66,8 @@ PetscErrorCode topology_destroy(topology **t);
 /* Scene builders add the structure by global id. */
 PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type);
 PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk, PetscInt type);
+/* Index of a bonded particle's gid in t->gids (sorted), or -1 when it has no bond. */
+PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot);
 /* Number of bonded (1-2 and 1-3) partners of a particle: its bonded work, for
  * the partition's weights. */
 PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count);

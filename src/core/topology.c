@@ -249,17 +249,24 @@ static PetscInt topology_nearest(const topology *t, const particles *ps, PetscIn
   return best;
 }
 
-PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count) {
+PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot) {
   PetscFunctionBeginUser;
   if (t->dirty) PetscCall(topology_build_tables(t));
-  *count = 0;
   PetscInt lo = 0, hi = t->n_gids;
   while (lo < hi) {
     const PetscInt mid = (lo + hi) / 2;
     if (t->gids[mid] < gid) lo = mid + 1;
     else hi = mid;
   }
-  if (lo < t->n_gids && t->gids[lo] == gid) *count = t->ex_start[lo + 1] - t->ex_start[lo];
+  *slot = lo < t->n_gids && t->gids[lo] == gid ? lo : -1;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count) {
+  PetscInt k;
+  PetscFunctionBeginUser;
+  PetscCall(topology_gid_slot(t, gid, &k));
+  *count = k < 0 ? 0 : t->ex_start[k + 1] - t->ex_start[k];
   PetscFunctionReturn(0);
 }
 

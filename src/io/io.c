@@ -178,13 +178,14 @@ PetscErrorCode io_restart(sim *s) {
 PetscErrorCode io_output(sim *s) {
   io_state *io = &s->io;
   char name[64], path[PETSC_MAX_PATH_LEN];
-  PetscInt64 n;
+  PetscInt64 n, n_bonds;
   PetscFunctionBeginUser;
   if (!io->snapshots) PetscFunctionReturn(0);
-  PetscCall(snapshot_write(s, io->snapshot_index, &n));
+  PetscCall(snapshot_write(s, io->snapshot_index, &n, &n_bonds));
   if (s->rank == 0) {
+    const xdmf_connectivity bonds = {"/bonds/rows", n_bonds, 2, "bonds"};
     PetscCall(snapshot_name(io->snapshot_index, name, sizeof(name)));
-    PetscCall(xdmf_add(io->xdmf, name, s->t, n, NULL));
+    PetscCall(xdmf_add(io->xdmf, name, s->t, n, n_bonds > 0 ? &bonds : NULL));
     PetscCall(sim_output_path(s, "particles.xdmf", path, sizeof(path)));
     PetscCall(xdmf_write(io->xdmf, path));
   }

@@ -179,8 +179,22 @@ PetscErrorCode xdmf_scan(xdmf *x, const char *dir, PetscInt n) {
     PetscCallHDF5(path, H5Sget_simple_extent_dims(space, dims, NULL));
     PetscCallHDF5(path, H5Sclose(space));
     PetscCallHDF5(path, H5Dclose(dset));
+    /* bonds, when the snapshot has them (snapshot_write_bonds) */
+    xdmf_connectivity bonds = {"/bonds/rows", 0, 2, "bonds"};
+    htri_t has_group, has_rows = 0;
+    PetscCallHDF5(path, has_group = H5Lexists(fid, "/bonds", H5P_DEFAULT));
+    if (has_group > 0) PetscCallHDF5(path, has_rows = H5Lexists(fid, "/bonds/rows", H5P_DEFAULT));
+    if (has_rows > 0) {
+      hsize_t bdims[2];
+      PetscCallHDF5(path, dset = H5Dopen2(fid, "/bonds/rows", H5P_DEFAULT));
+      PetscCallHDF5(path, space = H5Dget_space(dset));
+      PetscCallHDF5(path, H5Sget_simple_extent_dims(space, bdims, NULL));
+      PetscCallHDF5(path, H5Sclose(space));
+      PetscCallHDF5(path, H5Dclose(dset));
+      bonds.n_elements = (PetscInt64)bdims[0];
+    }
     PetscCallHDF5(path, H5Fclose(fid));
-    PetscCall(xdmf_add(x, name, t, (PetscInt64)dims[0], NULL));
+    PetscCall(xdmf_add(x, name, t, (PetscInt64)dims[0], bonds.n_elements > 0 ? &bonds : NULL));
   }
   PetscFunctionReturn(0);
 }

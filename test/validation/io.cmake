@@ -18,3 +18,7 @@ target_link_libraries(h5io_mpi PRIVATE dmhs_core)
 add_test(NAME io_h5io_mpi COMMAND bash ${DMHS_IO_DIR}/h5io_mpi.sh $<TARGET_FILE:h5io_mpi> ${DMHS_PYTHON}
   ${DMHS_IO_OUT}/h5io_mpi ${DMHS_MPIRUN})
 set_tests_properties(io_h5io_mpi PROPERTIES LABELS "io;mpi" TIMEOUT 120)
+
+# Bonds drawn as an XDMF Polyline over the snapshot's particles, on 2 ranks.
+add_test(NAME io_bonds COMMAND bash ${DMHS_IO_DIR}/bonds.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_MPIRUN} -- ${DMHS_IO_OUT}/bonds)
+set_tests_properties(io_bonds PROPERTIES LABELS "io;mpi" TIMEOUT 120)
