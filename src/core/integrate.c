@@ -96,7 +96,12 @@ PetscErrorCode integrate_stability_report(sim *s) {
   if (s->dt <= 0) {
     PetscCheck(which >= 0, s->comm, PETSC_ERR_ARG_WRONG,
                "-dt 0 (automatic) needs at least one time-step limit, and no module gives one");
-    s->dt = dt_min;
+    /* a margin below the smallest limit: limits that follow the state (the
+     * nonlinear bond's stiffness grows with its stretch) are re-checked during
+     * the run, and a dt exactly at the limit would stop at the first stretch */
+    s->dt = DT_AUTO_FRACTION * dt_min;
+    PetscCall(PetscPrintf(s->comm, "dt = %g s chosen automatically (-dt 0): %g x the smallest limit, %s\n", s->dt,
+                          DT_AUTO_FRACTION, limits.item[which].name));
   }
   PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
   for (int k = 0; k < limits.n; k++) {

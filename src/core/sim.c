@@ -27,7 +27,7 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
   PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
   PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, NULL));
-  PetscCall(PetscOptionsReal("-dt", "Time step [s] (0 = automatic: the smallest stability limit)", NULL, s->dt,
+  PetscCall(PetscOptionsReal("-dt", "Time step [s] (0 = automatic: 0.8 x the smallest stability limit)", NULL, s->dt,
                              &s->dt, NULL));
   PetscCall(PetscOptionsEnum("-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
                              preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));

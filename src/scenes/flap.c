@@ -317,10 +317,15 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
     PetscFunctionReturn(0);
   PetscCall(flap_tip(f, tip));
   PetscCall(flap_slip(f, s, &slip, &near, &umax));
-  if (s->rank == 0) /* mpi */
-    PetscCheck(fprintf(f->csv, "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%.6g,%.6g,%.6g\n", s->t, tip[0], tip[1], f->crossings,
-                       slip, near, umax) > 0,
+  if (s->rank == 0) { /* mpi: rank 0 writes */
+    /* slip is undefined while the liquid is at rest (u_max = 0): an empty cell, never NaN */
+    char slip_s[32] = "", near_s[32] = "";
+    if (isfinite(slip)) snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
+    if (isfinite(near)) snprintf(near_s, sizeof(near_s), "%.6g", near);
+    PetscCheck(fprintf(f->csv, "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t, tip[0], tip[1], f->crossings,
+                       slip_s, near_s, umax) > 0,
                PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write flap.csv");
+  }
   PetscFunctionReturn(0);
 }
 

@@ -1,0 +1,33 @@
+# Stiff and extreme cases (SPEC 5): the flexible flap with very soft and very
+# rigid leaflet angles, stiff bonds, the highest viscosity of the studies and a
+# strong drive must run stably with the automatic time step (-dt 0) and keep
+# the liquid out of the solid; a stiff bond at a fixed dt is refused before
+# step 0; a nonlinear bond whose stiffness outgrows dt stops the run naming it.
+set(DMHS_EXT_OUT ${CMAKE_BINARY_DIR}/test-output/extreme)
+set(EXT_FLAP -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts -quiet -checkpoint_at_end false
+    -output_interval 0.005)
+
+function(dmhs_extreme_ok name)
+  add_test(NAME extreme_${name} COMMAND bash ${PROJECT_SOURCE_DIR}/test/cli/expect_ok.sh
+    "fluid crossings 0.*dmhs summary" ${DMHS_EXT_OUT}/${name} --
+    ${DMHS_EXE} ${EXT_FLAP} -dt 0 -output_dir ${DMHS_EXT_OUT}/${name} ${ARGN})
+  set_tests_properties(extreme_${name} PROPERTIES LABELS validation TIMEOUT 120)
+endfunction()
+
+dmhs_extreme_ok(soft_angles -angle_k 1e-4 -t_end 0.02)          # SPEC soft leaflets
+dmhs_extreme_ok(rigid_angles -angle_k 0.05 -t_end 0.002)        # SPEC most rigid
+dmhs_extreme_ok(stiff_bonds -bond_k 1e8 -t_end 0.001)           # 100x the leaflet K
+dmhs_extreme_ok(high_viscosity -sph_nu 5e-4 -t_end 0.02)        # the colon study's highest nu
+dmhs_extreme_ok(strong_drive -body_force_amplitude 5 -t_end 0.02) # 10x the drive: 0.4 h deflection
+
+add_test(NAME extreme_stiff_bonds_refused COMMAND ${DMHS_EXPECT_FAIL}
+  "bond harmonic .*EXCEEDED.*pre-flight check failed" --
+  ${DMHS_EXE} ${EXT_FLAP} -bond_k 1e8 -dt 1e-5 -t_end 0.001 -output_dir ${DMHS_EXT_OUT}/refused)
+set_tests_properties(extreme_stiff_bonds_refused PROPERTIES LABELS validation TIMEOUT 60)
+
+add_test(NAME extreme_nonlinear_bond_outgrows_dt COMMAND ${DMHS_EXPECT_FAIL}
+  "exceeds the nonlinear bond limit .* at the largest stretch 0[.][0-9]+ r_max, bond gid [0-9]+-[0-9]+"
+  --no-nan ${DMHS_EXT_OUT}/nonlinear --
+  ${DMHS_EXE} ${EXT_FLAP} -dt 0 -bond_style nonlinear -bond_k 1e-6 -bond_rmax 2e-5 -body_force_amplitude 20
+  -t_end 0.05 -output_dir ${DMHS_EXT_OUT}/nonlinear)
+set_tests_properties(extreme_nonlinear_bond_outgrows_dt PROPERTIES LABELS validation TIMEOUT 60)
