@@ -66,6 +66,7 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   for (PetscInt k = 0; k < n; k++)
     PetscCall(PetscPrintf(s->comm, "dmhs: option -%s %s was not used by scene '%s' or its modules\n", names[k],
                           values[k] ? values[k] : "", s->scn->name));
+  const PetscInt n_unused = n;
   const PetscBool clean = n == 0 ? PETSC_TRUE : PETSC_FALSE;
   const char *first = n ? names[0] : "";
   char first_copy[256];
@@ -73,7 +74,7 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(clean, s->comm, PETSC_ERR_ARG_WRONG,
              "unknown or unused option -%s (and %" PetscInt_FMT " more); run with -help to list the options",
-             first_copy, n - 1);
+             first_copy, n_unused - 1);
   PetscFunctionReturn(0);
 }
 

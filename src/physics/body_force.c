@@ -1,9 +1,11 @@
-/* Body force on liquid particles:
+/* Body force on liquid particles (and, with -body_force_types fluid,solid, on
+ * the solids too: a membrane's weight under gravity):
  *   a_body(t) = F                         (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
  * plus gravity (0, -g). -body_force_amplitude g0 is F = (g0, 0), the pulsatile
  * drive g0 sin(2 pi t/T) of the vein case (SPEC 4.3). The current value is also left in sim->body_accel,
  * where the wall pass reads it for the hydrostatic part of wall pressure. */
+#include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
 #include "dmhs/events.h"
@@ -13,7 +15,10 @@ typedef struct {
   double F[DMHS_DIM]; /* [m/s^2] */
   double period;      /* [s], 0 = constant */
   double gravity;     /* [m/s^2], along -y */
+  PetscBool on_type[PTYPE_COUNT]; /* which particle types feel it (walls never: their motion is prescribed) */
 } body_force_data;
+
+static const char *const body_force_type_names[PTYPE_COUNT] = {"fluid", "wall", "solid"};
 
 PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
   body_force_data *d = m->data;
@@ -34,6 +39,9 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   PetscInt n = DMHS_DIM;
   PetscBool set, set_amplitude;
   double amplitude = d->F[0];
+  char *types[PTYPE_COUNT] = {NULL};
+  PetscInt n_types = PTYPE_COUNT;
+  PetscBool set_types;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
   PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, &set));
@@ -44,7 +52,22 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
                              d->period, &d->period, NULL));
   PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
+  PetscCall(PetscOptionsStringArray("-body_force_types", "Particle types the body force acts on: fluid, solid [1]",
+                                    NULL, types, &n_types, &set_types));
   PetscOptionsEnd();
+  if (set_types) {
+    for (int t = 0; t < PTYPE_COUNT; t++) d->on_type[t] = PETSC_FALSE;
+    for (PetscInt k = 0; k < n_types; k++) {
+      int found = -1;
+      for (int t = 0; t < PTYPE_COUNT; t++)
+        if (!strcmp(types[k], body_force_type_names[t])) found = t;
+      PetscCheck(found >= 0 && found != PTYPE_WALL, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+                 "-body_force_types: '%s' is not fluid or solid (walls move as prescribed)", types[k]);
+      d->on_type[found] = PETSC_TRUE;
+    }
+  }
+  if (set_types)
+    for (PetscInt k = 0; k < n_types; k++) PetscCall(PetscFree(types[k]));
   PetscCheck(!(set && set_amplitude), s->comm, PETSC_ERR_ARG_INCOMP,
              "give either -body_force Fx,Fy or -body_force_amplitude g0 (along x), not both");
   if (set_amplitude) {
@@ -66,7 +89,7 @@ static PetscErrorCode body_force_compute(module *self, sim *s) {
   body_force_value(d, s->t, s->body_accel);
   const double ax = s->body_accel[0], ay = s->body_accel[1];
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (!d->on_type[ps->type[i]]) continue;
     ps->a[i][0] += ax;
     ps->a[i][1] += ay;
   }
@@ -88,8 +111,9 @@ static PetscErrorCode body_force_view(module *self, sim *s, PetscViewer v) {
   body_force_data *d = self->data;
   PetscFunctionBeginUser;
   (void)s;
-  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2\n", d->F[0],
-                                   d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity));
+  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2, on %s%s\n",
+                                   d->F[0], d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity,
+                                   d->on_type[PTYPE_FLUID] ? "fluid " : "", d->on_type[PTYPE_SOLID] ? "solid" : ""));
   PetscFunctionReturn(0);
 }
 
@@ -109,5 +133,6 @@ PetscErrorCode body_force_module_create(module **m) {
   (*m)->view = body_force_view;
   (*m)->destroy = body_force_destroy;
   PetscCall(PetscNew((body_force_data **)&(*m)->data));
+  ((body_force_data *)(*m)->data)->on_type[PTYPE_FLUID] = PETSC_TRUE; /* the liquid only, by default */
   PetscFunctionReturn(0);
 }
