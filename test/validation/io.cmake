@@ -22,3 +22,8 @@ set_tests_properties(io_h5io_mpi PROPERTIES LABELS "io;mpi" TIMEOUT 120)
 # Bonds drawn as an XDMF Polyline over the snapshot's particles, on 2 ranks.
 add_test(NAME io_bonds COMMAND bash ${DMHS_IO_DIR}/bonds.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_MPIRUN} -- ${DMHS_IO_OUT}/bonds)
 set_tests_properties(io_bonds PROPERTIES LABELS "io;mpi" TIMEOUT 120)
+
+# Restart on another rank count (2 -> 3, 2 -> 1): bitwise the same as one rank throughout.
+add_test(NAME io_restart_ranks COMMAND bash ${DMHS_IO_DIR}/restart_ranks.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_MPIRUN}
+  -- ${DMHS_IO_OUT}/restart_ranks)
+set_tests_properties(io_restart_ranks PROPERTIES LABELS "io;mpi" TIMEOUT 120)
