@@ -44,6 +44,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   PetscCall(sim_destroy(&s));
+  if (!traceback) PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return 0;
 }
