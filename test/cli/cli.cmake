@@ -46,3 +46,6 @@ set_tests_properties(cli_summary_line PROPERTIES LABELS cli
   PASS_REGULAR_EXPRESSION "step +[0-9]+ +t .*particle-steps/s .*ETA.*max\\|v\\|.*dmhs summary: .*particle-steps/s: [0-9.e+]+")
 dmhs_cli_fail(cli_bad_body_force_type "-body_force_types: 'wall' is not fluid or solid"
   -options_file ${DMHS_INPUT}/flap-quick.opts -quiet -body_force_types fluid,wall -output_dir ${DMHS_CLI_OUT}/j)
+add_test(NAME cli_slurm_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
+  ${DMHS_CLI_OUT}/slurm)
+set_tests_properties(cli_slurm_script PROPERTIES LABELS cli TIMEOUT 60)
