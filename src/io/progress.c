@@ -32,13 +32,15 @@ PetscErrorCode progress_print(sim *s) {
 
 PetscErrorCode progress_summary(sim *s) {
   PetscInt n_owned = s->ps.n_owned, n_total;
+  char t_text[32];
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_owned, &n_total, 1, MPIU_INT, MPI_SUM, s->comm));
+  snprintf(t_text, sizeof(t_text), "%g", s->t); /* C formatting: PETSc's %g prints "1." */
   PetscCall(PetscPrintf(s->comm,
                         "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
-                        " steps to t = %g s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
+                        " steps to t = %s s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
                         "particle-steps/s: %.4e\n",
-                        s->scn->name, n_total, (int)s->size, s->step, s->t, s->n_rebuilds, s->loop_seconds,
+                        s->scn->name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds, s->loop_seconds,
                         particle_steps_per_second(s, s->loop_seconds)));
   PetscFunctionReturn(0);
 }
