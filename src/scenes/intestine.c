@@ -300,8 +300,8 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCall(intestine_park(c, s));
   PetscCall(peristalsis_get(c->peri, &tw, &Tw, NULL, NULL, &delay));
-  const PetscBool first = s->step == 0 || (!c->csv && s->io.restarted) ? PETSC_TRUE : PETSC_FALSE;
-  if (!first && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
+  /* rows at step 0 and at output times; a restarted run appends to the CSV from its next output */
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
   PetscCall(PetscCalloc2(np + 1, &cw, np + 1, &cr));
   PetscCall(tracking_count(s, TAG_WHITE, np, c->b, 0.0, cw, &nw, &xw));
   if (c->red) PetscCall(tracking_count(s, TAG_RED, np, c->b, 0.0, cr, &nr, &xr));
@@ -354,7 +354,7 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
         fprintf(c->csv, "\n");
       }
     }
-    if (!(first && s->io.restarted)) {
+    {
       int ok = fprintf(c->csv, "%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw) > 0;
       for (PetscInt k = 0; k <= np; k++) ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT, cw[k]) > 0;
       ok = ok && fprintf(c->csv, ",%.8g", alpha) > 0;

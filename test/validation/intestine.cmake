@@ -26,3 +26,9 @@ set_tests_properties(validation_intestine_overflow PROPERTIES LABELS validation 
 # pocket 0 -1 sinks); a value 2 and a short row are errors naming file:line.
 add_test(NAME validation_intestine_schedule COMMAND ${DMHS_INTESTINE} --mode schedule --outdir ${DMHS_INTESTINE_OUT}/schedule)
 set_tests_properties(validation_intestine_schedule PROPERTIES LABELS validation TIMEOUT 120)
+# Checkpoint at t = 0.13 s and -restart: intestine.csv (x_F history, counts,
+# lifts) identical to the uninterrupted quick run.
+add_test(NAME validation_intestine_restart
+         COMMAND ${DMHS_INTESTINE} --mode restart --outdir ${DMHS_INTESTINE_OUT}/restart --compare ${DMHS_INTESTINE_OUT}/quick)
+set_tests_properties(validation_intestine_restart PROPERTIES LABELS "validation;io" TIMEOUT 120
+                     FIXTURES_REQUIRED intestine_quick)
