@@ -277,12 +277,12 @@ PetscErrorCode peristalsis_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   PetscCall(PetscNew(&d));
-  d->t_w = 0.1;
+  d->t_w = 0.3;
   d->H = 2;
   d->force = 1.0;
   d->support = 100.0;
   d->damping = 1000.0;
-  d->ramp = 0.5;
+  d->ramp = 1.0;
   (*m)->name = "peristalsis";
   (*m)->set_from_options = peristalsis_set_from_options;
   (*m)->setup = peristalsis_setup;
