@@ -8,5 +8,6 @@ PetscErrorCode couette_scene_create(scene **out);    /* scenes/couette.c */
 PetscErrorCode box_scene_create(scene **out);        /* scenes/box.c */
 PetscErrorCode cantilever_scene_create(scene **out); /* scenes/cantilever.c */
 PetscErrorCode flap_scene_create(scene **out);       /* scenes/flap.c */
+PetscErrorCode intestine_scene_create(scene **out);  /* scenes/intestine.c */
 
 #endif

@@ -32,5 +32,6 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("Angle", id, &events.angle));
   PetscCall(PetscLogEventRegister("Repulsion", id, &events.repulsion));
   PetscCall(PetscLogEventRegister("SolidLoad", id, &events.solid_load));
+  PetscCall(PetscLogEventRegister("Peristalsis", id, &events.peristalsis));
   PetscFunctionReturn(0);
 }

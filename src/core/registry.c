@@ -10,6 +10,7 @@
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/repulsion.h"
 #include "dmhs/solid_load.h"
+#include "dmhs/peristalsis.h"
 
 static const struct {
   const char *name;
@@ -20,6 +21,7 @@ static const struct {
     {"box", box_scene_create},
     {"cantilever", cantilever_scene_create}, /* solids (issue 3) */
     {"flap", flap_scene_create},
+    {"intestine", intestine_scene_create}, /* SPEC 4.2 */
 };
 
 static const struct {
@@ -34,6 +36,7 @@ static const struct {
     {"angle_harmonic", angle_harmonic_module_create},
     {"repulsion", repulsion_module_create},
     {"solid_load", solid_load_module_create},
+    {"peristalsis", peristalsis_module_create}, /* intestine */
 };
 
 #define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))

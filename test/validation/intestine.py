@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""Intestine quick checks (test/validation/intestine.cmake, doc/validation.md).
+
+--mode run: runs input/intestine-quick.opts (optionally on --ranks N with
+  --mpirun) and asserts: the run reaches t_end; intestine.csv holds no NaN;
+  fluid in the computation + overflow = initial in every row; each segment
+  under a whole +1 sub-period rises by > --min-move and under a whole -1
+  sub-period sinks by > --min-move (the schedule's sign); x_F moves
+  downstream by > --min-front while pocket 0 squeezes; with --compare CSV,
+  the CSV equals the given one (to 1e-12 relative).
+--mode schedule: a custom schedule file runs (and is followed: the pocket
+  given +1 rises); a malformed one fails naming file and line.
+"""
+import argparse, os, subprocess, sys
+import numpy as np
+
+
+def run(args, outdir, extra, ranks=1):
+    os.makedirs(outdir, exist_ok=True)
+    cmd = [args.exe, "-options_file", args.opts, "-output_dir", outdir, "-quiet"] + extra
+    if ranks > 1:
+        cmd = args.mpirun.split() + ["-n", str(ranks)] + cmd
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    return p.returncode, p.stdout
+
+
+def load(outdir):
+    path = os.path.join(outdir, "intestine.csv")
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#")]
+    for l in lines:
+        assert "nan" not in l.lower(), f"NaN in {path}: {l}"
+    names = lines[0].strip().split(",")
+    data = np.array([[float(x) for x in l.strip().split(",")] for l in lines[1:]])
+    return names, data
+
+
+def col(names, data, n):
+    return data[:, names.index(n)]
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def sign_checks(names, data, min_move):
+    """For each pocket and each sub-period fully inside the run: the lift at
+    its end relative to the settled lift when the wave starts, against the
+    schedule value s_k (+1: up, -1: down)."""
+    t, sub = col(names, data, "t"), col(names, data, "sub")
+    npk = sum(1 for n in names if n.startswith("lift_"))
+    checked = 0
+    rest = np.where(sub >= 0)[0][0]  # the settled membrane, when the wave starts
+    for r in sorted(set(sub[sub >= 0].astype(int))):
+        idx = np.where(sub == r)[0]
+        if len(idx) < 3 or idx[-1] == len(sub) - 1:
+            continue  # the last sub-period may be cut by t_end
+        i1 = idx[-1]
+        for k in range(npk):
+            s = col(names, data, f"s_{k}")[i1]
+            d = col(names, data, f"lift_{k}")[i1] - col(names, data, f"lift_{k}")[rest]
+            if s == 0:
+                continue
+            print(f"  sub-period {r}: pocket {k} schedule {int(s):+d}, lift at its end vs rest {d:+.3e} m")
+            if s * d < min_move:
+                fail(f"pocket {k} in sub-period {r}: schedule {int(s):+d} but the segment moved {d:+.3e} m")
+            checked += 1
+    if checked == 0:
+        fail("no whole sub-period with a force to check")
+    return checked
+
+
+def mode_run(args):
+    rc, out = run(args, args.outdir, args.extra.split(), args.ranks)
+    print(out[-3000:])
+    if rc != 0:
+        fail(f"dmhs exited with {rc}")
+    names, data = load(args.outdir)
+    t = col(names, data, "t")
+    tend = [l for l in open(args.opts) if l.startswith("-t_end")]
+    if tend and t[-1] < float(tend[0].split()[1]) * (1 - 1e-6) - 1e-4:
+        fail(f"run stopped at t = {t[-1]}")
+    fluid, over = col(names, data, "fluid"), col(names, data, "overflow")
+    n0 = fluid[0] + over[0]
+    if np.any(fluid + over != n0):
+        fail("fluid + overflow not conserved")
+    white = sum(col(names, data, n) for n in names if n.startswith("white_"))
+    if np.any(white != white[0]):
+        fail("tracked (white) count not conserved")
+    if over[-1] < args.min_overflow:
+        fail(f"overflow {int(over[-1])} < {args.min_overflow}")
+    print(f"  particles: {int(n0)} fluid, conserved in all {len(t)} rows; overflow at the end {int(over[-1])}")
+    n = sign_checks(names, data, args.min_move)
+    print(f"  {n} sign checks passed")
+    # the front: from the start of pocket 0's first +1 to its end
+    sub, s0, xf = col(names, data, "sub"), col(names, data, "s_0"), col(names, data, "x_F")
+    sq = np.where(s0 > 0)[0]
+    if len(sq) == 0:
+        fail("pocket 0 never squeezes in this run")
+    i0, i1 = sq[0], sq[-1]
+    dxf = xf[i1] - xf[i0]
+    print(f"  x_F: {xf[i0]:.6g} m at t = {t[i0]:.4g} s -> {xf[i1]:.6g} m at t = {t[i1]:.4g} s (+{dxf:.3e} m); "
+          f"alpha at the end {col(names, data, 'alpha')[-1]:.4g}")
+    if dxf < args.min_front:
+        fail(f"front moved {dxf:.3e} m < {args.min_front} m while pocket 0 squeezed")
+    if args.compare:
+        names2, data2 = load(args.compare)
+        if names2 != names or data2.shape != data.shape:
+            fail("CSV layout differs from " + args.compare)
+        err = np.max(np.abs(data - data2) / np.maximum(1e-30, np.abs(data2) + 1e-12))
+        print(f"  largest relative difference to {args.compare}: {err:.3e}")
+        if err > 1e-12:
+            fail("CSV differs from the 1-rank run")
+    print("PASS")
+
+
+def mode_schedule(args):
+    os.makedirs(args.outdir, exist_ok=True)
+    good = os.path.join(args.outdir, "good.txt")
+    # 3 pockets: pocket 2 up, pocket 0 down, in every sub-period
+    with open(good, "w") as f:
+        f.write("# custom schedule: pocket 2 up, pocket 0 down\n-1 0 1\n\n-1, 0, 1  # commas work too\n")
+    rc, out = run(args, os.path.join(args.outdir, "good"), ["-peristalsis_schedule", good, "-t_end", "0.1"])
+    print(out[-1500:])
+    if rc != 0:
+        fail("custom schedule run failed")
+    names, data = load(os.path.join(args.outdir, "good"))
+    l0, l2 = col(names, data, "lift_0")[-1], col(names, data, "lift_2")[-1]
+    print(f"  custom schedule: lift_0 = {l0:+.3e} m (-1), lift_2 = {l2:+.3e} m (+1)")
+    if not (l2 > args.min_move and l0 < -args.min_move):
+        fail("the custom schedule was not followed")
+    bad = os.path.join(args.outdir, "bad.txt")
+    with open(bad, "w") as f:
+        f.write("# malformed\n1 0 -1\n1 2 0\n")
+    rc, out = run(args, os.path.join(args.outdir, "bad"), ["-peristalsis_schedule", bad, "-t_end", "0.01"])
+    print(out[-800:])
+    if rc == 0 or f"{bad}:3" not in out:
+        fail(f"malformed schedule: expected an error naming {bad}:3")
+    short = os.path.join(args.outdir, "short.txt")
+    with open(short, "w") as f:
+        f.write("1 0 -1\n0 1\n")
+    rc, out = run(args, os.path.join(args.outdir, "short"), ["-peristalsis_schedule", short, "-t_end", "0.01"])
+    if rc == 0 or f"{short}:2" not in out:
+        fail(f"short row: expected an error naming {short}:2")
+    print("PASS")
+
+
+def mode_restart(args):
+    """Stop at t = 0.13 s (checkpoint at the end), restart to t_end: the CSV
+    must equal the uninterrupted run's (--compare)."""
+    rc, out = run(args, args.outdir, ["-t_end", "0.13"])
+    if rc != 0:
+        print(out[-2000:])
+        fail("first half failed")
+    rc, out = run(args, args.outdir, ["-restart", os.path.join(args.outdir, "checkpoint.h5")])
+    print(out[-1200:])
+    if rc != 0:
+        fail("restart failed")
+    a = open(os.path.join(args.outdir, "intestine.csv")).read()
+    b = open(os.path.join(args.compare, "intestine.csv")).read()
+    if a != b:
+        fail("restarted CSV differs from the uninterrupted run")
+    print("  restarted intestine.csv identical to the uninterrupted run\nPASS")
+
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--exe", required=True)
+ap.add_argument("--opts", required=True)
+ap.add_argument("--outdir", required=True)
+ap.add_argument("--mode", default="run", choices=["run", "schedule", "restart"])
+ap.add_argument("--ranks", type=int, default=1)
+ap.add_argument("--mpirun", default="mpirun --oversubscribe --allow-run-as-root")
+ap.add_argument("--compare", default="")
+ap.add_argument("--extra", default="", help="more dmhs options (one string)")
+ap.add_argument("--min-overflow", type=int, default=0)
+ap.add_argument("--min-move", type=float, default=5e-4)
+ap.add_argument("--min-front", type=float, default=5e-4)
+args = ap.parse_args()
+{"run": mode_run, "schedule": mode_schedule, "restart": mode_restart}[args.mode](args)
