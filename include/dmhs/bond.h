@@ -5,6 +5,7 @@
  * Coefficients are per bond type: -bond_k 1e6 (every type) or -bond_k 1e6,2e6 (types 0, 1). */
 #ifndef DMHS_BOND_H
 #define DMHS_BOND_H
+#include <petscoptions.h>
 #include "dmhs/module.h"
 #include "dmhs/topology.h"
 
@@ -36,6 +37,12 @@ PetscErrorCode bond_set_default(struct sim *s, double k, double r0, double rmax)
 /* Resolved bond parameters of the enabled bond module (for scenes' diagnostics). */
 PetscErrorCode bond_get_params(struct sim *s, bond_style *style, const bond_params **p);
 
+/* Shared by the two bond modules: reads -bond_k (help text per style) and
+ * -bond_r0 inside their options block; checks them per type and finds the
+ * smallest solid mass in setup (k_unit names K's unit in messages); frees. */
+PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p, const char *k_help);
+PetscErrorCode bond_setup_k_r0(struct sim *s, bond_params *p, const char *k_unit);
+PetscErrorCode bond_destroy(module *self);
 /* Shared by the solid modules' setup: checks per-type coefficients given for
  * n_given types cover n_types (one value = every type), names the option. */
 PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given, PetscInt n_types);

@@ -7,6 +7,40 @@
 
 const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
 
+PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p, const char *k_help) {
+  PetscInt n = TOPOLOGY_MAX_TYPES;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsRealArray("-bond_k", k_help, NULL, p->k, &n, &set));
+  p->n_k = set ? n : 0;
+  n = TOPOLOGY_MAX_TYPES;
+  PetscCall(PetscOptionsRealArray("-bond_r0", "Bond rest length r0 [m], one value or one per bond type", NULL, p->r0,
+                                  &n, &set));
+  p->n_r0 = set ? n : 0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_setup_k_r0(sim *s, bond_params *p, const char *k_unit) {
+  const PetscInt nt = s->topo->n_bond_types;
+  PetscFunctionBeginUser;
+  PetscCall(bond_check_type_coeffs("-bond_k", p->k, p->n_k, nt));
+  PetscCall(bond_check_type_coeffs("-bond_r0", p->r0, p->n_r0, nt));
+  for (PetscInt t = 0; t < nt; t++) {
+    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_k must be > 0 (type %" PetscInt_FMT ": %g %s)",
+               t, p->k[t], k_unit);
+    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)",
+               t, p->r0[t]);
+  }
+  PetscCall(bond_min_solid_mass(s, &p->m_min));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_destroy(module *self) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
 static module *bond_find(sim *s) {
   for (int m = 0; m < s->n_modules; m++)
     if (!strcmp(s->modules[m]->name, "bond_harmonic") || !strcmp(s->modules[m]->name, "bond_nonlinear"))

@@ -10,18 +10,10 @@
 
 static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
   bond_params *p = self->data;
-  PetscInt n;
-  PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Harmonic bonds U = K (r - r0)^2 (module bond_harmonic)", NULL);
-  n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_k", "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type",
-                                  NULL, p->k, &n, &set));
-  p->n_k = set ? n : 0;
-  n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_r0", "Bond rest length r0 [m], one value or one per bond type", NULL, p->r0,
-                                  &n, &set));
-  p->n_r0 = set ? n : 0;
+  PetscCall(bond_options_k_r0(PetscOptionsObject, p,
+                              "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type"));
   PetscOptionsEnd();
   double r0max = 0;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) r0max = PetscMax(r0max, p->r0[t]);
@@ -31,18 +23,8 @@ static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
 }
 
 static PetscErrorCode bond_harmonic_setup(module *self, sim *s) {
-  bond_params *p = self->data;
-  const PetscInt nt = s->topo->n_bond_types;
   PetscFunctionBeginUser;
-  PetscCall(bond_check_type_coeffs("-bond_k", p->k, p->n_k, nt));
-  PetscCall(bond_check_type_coeffs("-bond_r0", p->r0, p->n_r0, nt));
-  for (PetscInt t = 0; t < nt; t++) {
-    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_k must be > 0 (type %" PetscInt_FMT ": %g J/m^2)",
-               t, p->k[t]);
-    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)",
-               t, p->r0[t]);
-  }
-  PetscCall(bond_min_solid_mass(s, &p->m_min));
+  PetscCall(bond_setup_k_r0(s, self->data, "J/m^2"));
   PetscFunctionReturn(0);
 }
 
@@ -110,12 +92,6 @@ static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode bond_harmonic_destroy(module *self) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscFree(self->data));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode bond_harmonic_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
@@ -126,7 +102,7 @@ PetscErrorCode bond_harmonic_module_create(module **m) {
   (*m)->compute = bond_harmonic_compute;
   (*m)->max_dt = bond_harmonic_max_dt;
   (*m)->view = bond_harmonic_view;
-  (*m)->destroy = bond_harmonic_destroy;
+  (*m)->destroy = bond_destroy;
   (*m)->energy = bond_harmonic_energy_sum;
   PetscCall(PetscNew((bond_params **)&(*m)->data));
   /* the vein leaflets' bonds (SPEC 4.3) until a scene or the options say otherwise */

@@ -28,14 +28,7 @@ static PetscErrorCode bond_nonlinear_set_from_options(module *self, sim *s) {
   PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Nonlinear bonds U = k_b (r-r0)^2/(r_max^2-(r-r0)^2) (module bond_nonlinear)", NULL);
-  n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_k", "Bond energy scale k_b [J], one value or one per bond type", NULL, p->k, &n,
-                                  &set));
-  p->n_k = set ? n : 0;
-  n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_r0", "Bond rest length r0 [m], one value or one per bond type", NULL, p->r0,
-                                  &n, &set));
-  p->n_r0 = set ? n : 0;
+  PetscCall(bond_options_k_r0(PetscOptionsObject, p, "Bond energy scale k_b [J], one value or one per bond type"));
   n = TOPOLOGY_MAX_TYPES;
   PetscCall(PetscOptionsRealArray("-bond_rmax", "Largest stretch |r - r0| = r_max [m] (the run stops there)", NULL,
                                   p->rmax, &n, &set));
@@ -51,18 +44,11 @@ static PetscErrorCode bond_nonlinear_setup(module *self, sim *s) {
   bond_params *p = self->data;
   const PetscInt nt = s->topo->n_bond_types;
   PetscFunctionBeginUser;
-  PetscCall(bond_check_type_coeffs("-bond_k", p->k, p->n_k, nt));
-  PetscCall(bond_check_type_coeffs("-bond_r0", p->r0, p->n_r0, nt));
+  PetscCall(bond_setup_k_r0(s, p, "J"));
   PetscCall(bond_check_type_coeffs("-bond_rmax", p->rmax, p->n_rmax, nt));
-  for (PetscInt t = 0; t < nt; t++) {
-    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_k must be > 0 (type %" PetscInt_FMT ": %g J)", t,
-               p->k[t]);
-    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)",
-               t, p->r0[t]);
+  for (PetscInt t = 0; t < nt; t++)
     PetscCheck(p->rmax[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-bond_rmax must be > 0 (type %" PetscInt_FMT ": %g m)", t, p->rmax[t]);
-  }
-  PetscCall(bond_min_solid_mass(s, &p->m_min));
   PetscFunctionReturn(0);
 }
 
@@ -206,12 +192,6 @@ static PetscErrorCode bond_nonlinear_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode bond_nonlinear_destroy(module *self) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscFree(self->data));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode bond_nonlinear_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
@@ -222,7 +202,7 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   (*m)->compute = bond_nonlinear_compute;
   (*m)->max_dt = bond_nonlinear_max_dt;
   (*m)->view = bond_nonlinear_view;
-  (*m)->destroy = bond_nonlinear_destroy;
+  (*m)->destroy = bond_destroy;
   (*m)->energy = bond_nonlinear_energy_sum;
   PetscCall(PetscNew((bond_nonlinear_data **)&(*m)->data));
   /* the colon membrane's bonds (SPEC 4.2) until a scene or the options say otherwise */
