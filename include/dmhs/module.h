@@ -32,6 +32,11 @@ struct module {
   /* Potential energy of this module's interactions [J], summed over ranks
    * (NULL when the module has none, e.g. SPH or body forces). */
   PetscErrorCode (*energy)(module *self, struct sim *s, double *e);
+  /* Optional (stress diagnostics, src/diag/stress.c): adds this module's
+   * per-particle virial W_i = -1/2 sum_j (x_i - x_j) (x) F_ij, components
+   * (xx, xy, yy) [N m per unit depth], to W[i] for the rows its forces reach,
+   * exactly as compute() distributes forces (writes to ghost rows are ignored). */
+  PetscErrorCode (*virial)(module *self, struct sim *s, double (*W)[3]);
 };
 
 #endif

@@ -33,6 +33,15 @@ typedef struct particles {
   double *rho;                /* density [kg/m^3] */
   double *drho;               /* density rate [kg/m^3/s] */
   double *p;                  /* pressure [Pa] */
+  /* optional rows (NULL unless enabled, fields.c) */
+  PetscInt *body;             /* solid body id, 0 = none (repulsion between bodies) */
+  double *shear_rate;         /* sqrt(2 D:D) from the SPH velocity gradient [1/s] */
+  double *stress_xx, *stress_xy, *stress_yy; /* virial stress [Pa] (src/diag/stress.c) */
+  double *stress_mag;         /* its Frobenius norm [Pa] */
+  double *pressure_force;     /* |SPH pressure force| [N/m] */
+  double *speed;              /* |v| [m/s] */
+  double *displacement;       /* |x - x0| (minimum image) [m] */
+  PetscInt *side;             /* vein: side of the nearest leaflet, -1/0/+1 */
 } particles;
 
 PetscErrorCode particles_create(particles *ps);

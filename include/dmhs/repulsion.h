@@ -7,5 +7,7 @@
 PetscErrorCode repulsion_module_create(module **m);
 /* The scene's defaults (before the options pass): K [J], r* [m], exponents. */
 PetscErrorCode repulsion_set_default(module *m, double K, double rstar, PetscInt p1, PetscInt p2);
+/* The scene's default for -repulsion_bodies (needs the optional `body` field). */
+PetscErrorCode repulsion_set_bodies(module *m, PetscBool on);
 
 #endif

@@ -9,5 +9,6 @@ PetscErrorCode box_scene_create(scene **out);        /* scenes/box.c */
 PetscErrorCode cantilever_scene_create(scene **out); /* scenes/cantilever.c */
 PetscErrorCode flap_scene_create(scene **out);       /* scenes/flap.c */
 PetscErrorCode intestine_scene_create(scene **out);  /* scenes/intestine.c */
+PetscErrorCode vein_scene_create(scene **out);       /* scenes/vein.c */
 
 #endif

@@ -25,6 +25,7 @@ typedef struct sph_params {
   double av_alpha; /* Monaghan artificial viscosity (0 = off) */
   double av_beta;
   double p_background; /* p_b [Pa] added to every EOS: p = EOS(rho) + p_b (0 = off) */
+  double delta;        /* density diffusion coefficient (Molteni & Colagrossi 2009; 0 = off) */
 } sph_params;
 
 /* Registers the sph options into s->sph (defaults already there) and returns the module. */

@@ -1,9 +1,16 @@
 /* The field table: the single place that says, for every per-particle array,
  * whether it migrates, goes to ghosts, is checkpointed and is written out.
- * Adding a particle quantity = one row here + one member in struct particles. */
+ * Adding a particle quantity = one row here + one member in struct particles.
+ *
+ * Rows flagged FIELD_OPTIONAL exist only when a scene or module asks for them
+ * (fields_enable, before the first particle is added): a case without solid
+ * bodies or stress diagnostics allocates, migrates and writes none of them.
+ * fields_table() lists the active rows only, so every loop over the table
+ * (allocation, packing, checkpoint, snapshots, XDMF) follows. */
 #include <string.h>
 #include "dmhs/fields.h"
 #include "dmhs/particles.h"
+#include <petscsys.h>
 
 #define ALL (FIELD_MIGRATE | FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT)
 #define ROW(member, w, k, fl, u) {#member, w, k, offsetof(particles, member), fl, u}
@@ -29,11 +36,66 @@ static const field_desc table[] = {
     ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "kg/m^3/s"),
     /* p is recomputed before use; checkpointed so a restarted state is complete */
     ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT, "Pa"),
+    /* optional: which solid body a particle belongs to (0 = none / walls), so
+     * that repulsion can keep two bodies (the vein's leaflets) apart */
+    ROW(body, 1, FIELD_INT, ALL | FIELD_OPTIONAL, "1"),
+    /* optional: per-particle stress diagnostics (src/diag/stress.c), derived at
+     * output times from the current state, hence neither migrated nor saved */
+    ROW(shear_rate, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "1/s"),
+    ROW(stress_xx, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "Pa"),
+    ROW(stress_xy, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "Pa"),
+    ROW(stress_yy, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "Pa"),
+    ROW(stress_mag, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "Pa"),
+    ROW(pressure_force, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "N/m"),
+    ROW(speed, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "m/s"),
+    ROW(displacement, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "m"),
+    /* optional: side of the nearest leaflet a fluid particle was last seen on
+     * (-1, +1; 0 = not beside one), for the vein's crossing count */
+    ROW(side, 1, FIELD_INT, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "1"),
 };
 
+#define N_ROWS (sizeof(table) / sizeof(table[0]))
+static PetscBool enabled[N_ROWS];
+static field_desc active[N_ROWS];
+static size_t n_active;
+static PetscBool frozen; /* particles exist: the set of rows can no longer change */
+
+static void fields_collect(void) {
+  n_active = 0;
+  for (size_t k = 0; k < N_ROWS; k++)
+    if (!(table[k].flags & FIELD_OPTIONAL) || enabled[k]) active[n_active++] = table[k];
+}
+
 const field_desc *fields_table(size_t *count) {
-  *count = sizeof(table) / sizeof(table[0]);
-  return table;
+  if (!n_active) fields_collect();
+  *count = n_active;
+  return active;
+}
+
+PetscErrorCode fields_enable(const char *name) {
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < N_ROWS; k++) {
+    if (strcmp(table[k].name, name)) continue;
+    PetscCheck(table[k].flags & FIELD_OPTIONAL, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "fields_enable: field %s always exists", name);
+    if (enabled[k]) PetscFunctionReturn(0);
+    PetscCheck(!frozen, PETSC_COMM_SELF, PETSC_ERR_ORDER,
+               "fields_enable(%s): particles already exist; enable fields in the scene's options pass", name);
+    enabled[k] = PETSC_TRUE;
+    fields_collect();
+    PetscFunctionReturn(0);
+  }
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "fields_enable: no field named %s", name);
+}
+
+PetscBool fields_enabled(const char *name) { return fields_find(name) ? PETSC_TRUE : PETSC_FALSE; }
+
+void fields_freeze(PetscBool on) { frozen = on; }
+
+void fields_reset(void) {
+  for (size_t k = 0; k < N_ROWS; k++) enabled[k] = PETSC_FALSE;
+  frozen = PETSC_FALSE;
+  fields_collect();
 }
 
 size_t fields_row_bytes(const field_desc *f) {

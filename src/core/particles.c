@@ -24,6 +24,7 @@ PetscErrorCode particles_reserve(particles *ps, PetscInt n) {
   const field_desc *t = fields_table(&nf);
   PetscFunctionBeginUser;
   if (n <= ps->capacity) PetscFunctionReturn(0);
+  fields_freeze(PETSC_TRUE);
   /* grow geometrically so appending one particle at a time stays linear */
   PetscInt cap = PetscMax(n, ps->capacity + ps->capacity / 2 + 16);
   for (size_t k = 0; k < nf; k++) {

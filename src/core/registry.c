@@ -22,6 +22,7 @@ static const struct {
     {"cantilever", cantilever_scene_create}, /* solids (issue 3) */
     {"flap", flap_scene_create},
     {"intestine", intestine_scene_create}, /* SPEC 4.2 */
+    {"vein", vein_scene_create},
 };
 
 static const struct {

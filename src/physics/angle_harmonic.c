@@ -121,6 +121,31 @@ static PetscErrorCode angle_compute(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* Three-body virial -(a (x) F_i + b (x) F_k) (a = x_i - x_j, b = x_k - x_j),
+ * a third to each of the three rows, as LAMMPS' compute stress/atom does. */
+static PetscErrorCode angle_virial(module *self, sim *s, double (*W)[3]) {
+  const angle_data *d = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < t->n_angle_local; q++) {
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
+    double fi[2], fk[2];
+    (void)angle_harmonic_iact(d->k[ty], d->theta0[ty], ra, rb, fi, fk);
+    const double third = -1.0 / 3.0;
+    const double w[3] = {third * (ra[0] * fi[0] + rb[0] * fk[0]), third * (ra[0] * fi[1] + rb[0] * fk[1]),
+                         third * (ra[1] * fi[1] + rb[1] * fk[1])};
+    for (int c = 0; c < 3; c++) {
+      W[i][c] += w[c];
+      W[j][c] += w[c];
+      W[k][c] += w[c];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode angle_energy_sum(module *self, sim *s, double *e) {
   const angle_data *d = self->data;
   const topology *t = s->topo;
@@ -187,6 +212,7 @@ PetscErrorCode angle_harmonic_module_create(module **m) {
   (*m)->view = angle_view;
   (*m)->destroy = angle_destroy;
   (*m)->energy = angle_energy_sum;
+  (*m)->virial = angle_virial;
   PetscCall(PetscNew((angle_data **)&(*m)->data));
   /* the vein leaflets' angles (SPEC 4.3) */
   angle_data *d = (*m)->data;

@@ -28,6 +28,21 @@ PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode body_force_get_drive(module *m, double F[], double *period) {
+  const body_force_data *d = m->data;
+  PetscFunctionBeginUser;
+  for (int k = 0; k < DMHS_DIM; k++) F[k] = d->F[k];
+  *period = d->period;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode body_force_set_default_period(module *m, double period) {
+  body_force_data *d = m->data;
+  PetscFunctionBeginUser;
+  d->period = period;
+  PetscFunctionReturn(0);
+}
+
 static void body_force_value(const body_force_data *d, double t, double a[DMHS_DIM]) {
   const double phase = d->period > 0 ? sin(2.0 * M_PI * t / d->period) : 1.0;
   a[0] = d->F[0] * phase;

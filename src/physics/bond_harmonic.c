@@ -56,6 +56,25 @@ static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* Pair virial of each bond: both ends get -1/2 d (x) F_i with F_i = fr d. */
+static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3]) {
+  const bond_params *p = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
+    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
+    for (int c = 0; c < 3; c++) {
+      W[i][c] += w[c];
+      W[j][c] += w[c];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) {
   const bond_params *p = self->data;
   const topology *t = s->topo;
@@ -104,6 +123,7 @@ PetscErrorCode bond_harmonic_module_create(module **m) {
   (*m)->view = bond_harmonic_view;
   (*m)->destroy = bond_destroy;
   (*m)->energy = bond_harmonic_energy_sum;
+  (*m)->virial = bond_harmonic_virial;
   PetscCall(PetscNew((bond_params **)&(*m)->data));
   /* the vein leaflets' bonds (SPEC 4.3) until a scene or the options say otherwise */
   bond_params *p = (*m)->data;

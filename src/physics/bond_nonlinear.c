@@ -160,6 +160,26 @@ static PetscErrorCode bond_nonlinear_energy_sum(module *self, sim *s, double *e)
   PetscFunctionReturn(0);
 }
 
+/* Pair virial of each bond: both ends get -1/2 d (x) F_i with F_i = fr d. */
+static PetscErrorCode bond_nonlinear_virial(module *self, sim *s, double (*W)[3]) {
+  const bond_nonlinear_data *dd = self->data;
+  const bond_params *p = &dd->p;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double fr = bond_nonlinear_iact(p->k[ty], p->r0[ty], p->rmax[ty], hypot(d[0], d[1]));
+    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
+    for (int c = 0; c < 3; c++) {
+      W[i][c] += w[c];
+      W[j][c] += w[c];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) {
   const bond_params *p = self->data;
   double local = INFINITY, limit, f_local = 0, f;
@@ -204,6 +224,7 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   (*m)->view = bond_nonlinear_view;
   (*m)->destroy = bond_destroy;
   (*m)->energy = bond_nonlinear_energy_sum;
+  (*m)->virial = bond_nonlinear_virial;
   PetscCall(PetscNew((bond_nonlinear_data **)&(*m)->data));
   /* the colon membrane's bonds (SPEC 4.2) until a scene or the options say otherwise */
   bond_params *p = (*m)->data;

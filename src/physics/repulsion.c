@@ -1,6 +1,10 @@
 /* Module repulsion (SPEC 3): for every listed pair of one fluid and one
  * solid/wall particle closer than r*,
  *   F_fluid = K [(r* / r)^p1 - (r* / r)^p2] r_vec/r^2  (r_vec from the other to the fluid one)
+ * and, with -repulsion_bodies (scenes with several solid bodies, e.g. the
+ * vein's two leaflets; needs the optional `body` field), the same force
+ * between two non-fluid particles of different bodies (walls are body 0), so
+ * that the leaflets cannot pass through each other or through the walls.
  * Options -repulsion_k [J], -repulsion_rstar [m], -repulsion_p1, -repulsion_p2
  * (4, 2 by default as in the thesis runs; 12, 6 allowed; any p1 > p2 >= 1).
  * Pair arithmetic in repulsion_iact.h; the (4, 2) and (12, 6) sweeps are
@@ -13,12 +17,21 @@
 #include "dmhs/repulsion.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
+#include "dmhs/fields.h"
 #include "repulsion_iact.h"
 
 typedef struct {
   double K, rstar;
   PetscInt p1, p2;
+  PetscBool bodies; /* also between different solid bodies */
 } repulsion_data;
+
+PetscErrorCode repulsion_set_bodies(module *m, PetscBool on) {
+  repulsion_data *d = m->data;
+  PetscFunctionBeginUser;
+  d->bodies = on;
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode repulsion_set_default(module *m, double K, double rstar, PetscInt p1, PetscInt p2) {
   repulsion_data *d = m->data;
@@ -40,7 +53,12 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
   PetscCall(PetscOptionsReal("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar, &d->rstar, NULL));
   PetscCall(PetscOptionsInt("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL, d->p1, &d->p1, NULL));
   PetscCall(PetscOptionsInt("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL, d->p2, &d->p2, NULL));
+  PetscCall(PetscOptionsBool("-repulsion_bodies",
+                             "Also repel non-fluid particles of different solid bodies (scenes that number bodies)",
+                             NULL, d->bodies, &d->bodies, NULL));
   PetscOptionsEnd();
+  PetscCheck(!d->bodies || fields_enabled("body"), s->comm, PETSC_ERR_ARG_INCOMP,
+             "-repulsion_bodies: scene '%s' does not number its solid bodies", s->scn->name);
   PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)", d->K);
   PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_rstar must be > 0 (got %g m)", d->rstar);
   PetscCheck(d->p2 >= 1 && d->p1 > d->p2 && d->p1 <= 24, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -53,22 +71,34 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
 
 typedef struct {
   PetscInt n_pairs;
-  const PetscInt *restrict pi, *restrict pj, *restrict type;
+  const PetscInt *restrict pi, *restrict pj, *restrict type, *restrict body;
   const double (*restrict x)[2];
   const double *restrict mass;
   double (*restrict a)[2];
   double K, rstar;
 } repulsion_args;
 
-static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2, const repulsion_args *A) {
-  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj, *restrict type = A->type;
+/* Does the pair (i, j) repel? One fluid and one solid/wall; with bodies, also
+ * two non-fluid particles of different bodies. */
+static inline __attribute__((always_inline)) int repulsion_acts(int bodies, const PetscInt *type,
+                                                                const PetscInt *body, PetscInt i,
+                                                                PetscInt j) {
+  const int fi = type[i] == PTYPE_FLUID, fj = type[j] == PTYPE_FLUID;
+  if (fi != fj) return 1;
+  return bodies && !fi && body[i] != body[j];
+}
+
+static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2, int bodies,
+                                                                  const repulsion_args *A) {
+  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj, *restrict type = A->type,
+                           *restrict body = A->body;
   const double(*restrict x)[2] = A->x;
   const double *restrict mass = A->mass;
   double(*restrict a)[2] = A->a;
   const double K = A->K, rstar = A->rstar, rs2 = rstar * rstar;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
-    if ((type[i] == PTYPE_FLUID) == (type[j] == PTYPE_FLUID)) continue; /* one fluid, one solid/wall */
+    if (!repulsion_acts(bodies, type, body, i, j)) continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r2 = d[0] * d[0] + d[1] * d[1];
     if (r2 >= rs2) continue;
@@ -81,8 +111,9 @@ static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2
   }
 }
 
-static void sweep_4_2(const repulsion_args *A) { repulsion_sweep(4, 2, A); }
-static void sweep_12_6(const repulsion_args *A) { repulsion_sweep(12, 6, A); }
+static void sweep_4_2(const repulsion_args *A) { repulsion_sweep(4, 2, 0, A); }
+static void sweep_12_6(const repulsion_args *A) { repulsion_sweep(12, 6, 0, A); }
+static void sweep_4_2_bodies(const repulsion_args *A) { repulsion_sweep(4, 2, 1, A); }
 
 static PetscErrorCode repulsion_compute(module *self, sim *s) {
   const repulsion_data *d = self->data;
@@ -93,14 +124,18 @@ static PetscErrorCode repulsion_compute(module *self, sim *s) {
                             .pi = s->cel.pair_i,
                             .pj = s->cel.pair_j,
                             .type = ps->type,
+                            .body = ps->body,
                             .x = (const double(*)[2])ps->x,
                             .mass = ps->mass,
                             .a = ps->a,
                             .K = d->K,
                             .rstar = d->rstar};
-  if (d->p1 == 4 && d->p2 == 2) sweep_4_2(&A);
+  if (d->bodies) {
+    if (d->p1 == 4 && d->p2 == 2) sweep_4_2_bodies(&A);
+    else repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
+  } else if (d->p1 == 4 && d->p2 == 2) sweep_4_2(&A);
   else if (d->p1 == 12 && d->p2 == 6) sweep_12_6(&A);
-  else repulsion_sweep((int)d->p1, (int)d->p2, &A); /* generic: loop powers */
+  else repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
   PetscCall(PetscLogFlops(10.0 * (double)s->cel.n_pairs));
   PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -113,12 +148,34 @@ static PetscErrorCode repulsion_energy_sum(module *self, sim *s, double *e) {
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
-    if ((ps->type[i] == PTYPE_FLUID) == (ps->type[j] == PTYPE_FLUID)) continue;
+    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j)) continue;
     const double w = 0.5 * ((i < ps->n_owned) + (j < ps->n_owned)); /* share owned here */
     local += w * repulsion_energy(d->K, d->rstar, (int)d->p1, (int)d->p2,
                                   hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]));
   }
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscFunctionReturn(0);
+}
+
+/* Pair virial: both particles get -1/2 d (x) F_i, F_i = fr d, d = x_i - x_j. */
+static PetscErrorCode repulsion_virial(module *self, sim *s, double (*W)[3]) {
+  const repulsion_data *d = self->data;
+  const particles *ps = &s->ps;
+  const double rs2 = d->rstar * d->rstar;
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
+    const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
+    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j)) continue;
+    const double r[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double r2 = r[0] * r[0] + r[1] * r[1];
+    if (r2 >= rs2) continue;
+    const double fr = repulsion_iact(d->K, d->rstar, (int)d->p1, (int)d->p2, r2);
+    const double w[3] = {-0.5 * fr * r[0] * r[0], -0.5 * fr * r[0] * r[1], -0.5 * fr * r[1] * r[1]};
+    for (int c = 0; c < 3; c++) {
+      W[i][c] += w[c];
+      W[j][c] += w[c];
+    }
+  }
   PetscFunctionReturn(0);
 }
 
@@ -132,8 +189,10 @@ static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
   }
   PetscCallMPI(MPI_Allreduce(local, m, 2, MPI_DOUBLE, MPI_MIN, s->comm));
   if (!isfinite(m[0]) || d->K <= 0) PetscFunctionReturn(0);
-  /* against a wall the fluid particle moves alone; against a solid, both do */
-  const double mu = isfinite(m[1]) ? m[0] * m[1] / (m[0] + m[1]) : m[0];
+  /* against a wall the fluid particle moves alone; against a solid, both do;
+   * two solids of different bodies: half the solid mass */
+  double mu = isfinite(m[1]) ? m[0] * m[1] / (m[0] + m[1]) : m[0];
+  if (d->bodies && isfinite(m[1])) mu = PetscMin(mu, 0.5 * m[1]);
   const double k = d->K * (double)(d->p1 - d->p2) / (d->rstar * d->rstar);
   PetscCall(dt_limits_add(l, "repulsion", "0.2 sqrt(mu/k), k = K (p1-p2)/r*^2, mu reduced mass",
                           SPRING_DT_FACTOR * sqrt(mu / k)));
@@ -145,9 +204,9 @@ static PetscErrorCode repulsion_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(PetscViewerASCIIPrintf(v,
-                                   "repulsion: solid/wall-fluid, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
+                                   "repulsion: solid/wall-fluid%s, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
                                    ", p2 = %" PetscInt_FMT "\n",
-                                   d->K, d->rstar, d->p1, d->p2));
+                                   d->bodies ? " and between solid bodies" : "", d->K, d->rstar, d->p1, d->p2));
   PetscFunctionReturn(0);
 }
 
@@ -168,6 +227,7 @@ PetscErrorCode repulsion_module_create(module **m) {
   (*m)->view = repulsion_view;
   (*m)->destroy = repulsion_destroy;
   (*m)->energy = repulsion_energy_sum;
+  (*m)->virial = repulsion_virial;
   PetscCall(PetscNew((repulsion_data **)&(*m)->data));
   /* the vein case's coupling (SPEC 4.3) */
   PetscCall(repulsion_set_default(*m, 4e-4, 1e-4, 4, 2));

@@ -37,7 +37,15 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCall(PetscOptionsReal("-sph_p_background",
                              "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b (suppresses tensile voids)",
                              NULL, sp->p_background, &sp->p_background, NULL));
+  PetscCall(PetscOptionsReal("-sph_delta",
+                             "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
+                             "Colagrossi 2009; 0 = off, 0.1 usual)",
+                             NULL, sp->delta, &sp->delta, NULL));
   PetscOptionsEnd();
+  PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
+  PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
+             "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
   PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)", sp->rho0);
   PetscCheck(sp->c0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_c0 must be > 0 (got %g)", sp->c0);
@@ -99,6 +107,14 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
                                    sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
   PetscCall(PetscViewerASCIIPrintf(v, "sph: eos %s, background pressure %g Pa, density %s, artificial viscosity alpha = %g beta = %g, walls: Adami extrapolation\n",
                                    sph_eos_names[sp->eos], sp->p_background, sph_density_names[sp->density], sp->av_alpha, sp->av_beta));
+  if (sp->delta > 0) PetscCall(PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sph_virial(module *self, sim *s, double (*W)[3]) {
+  PetscFunctionBeginUser;
+  (void)self;
+  PetscCall(sph_stress_virial(s, W));
   PetscFunctionReturn(0);
 }
 
@@ -122,6 +138,7 @@ PetscErrorCode sph_module_create(module **m) {
   (*m)->max_dt = sph_max_dt;
   (*m)->view = sph_view;
   (*m)->destroy = sph_destroy;
+  (*m)->virial = sph_virial;
   PetscCall(PetscNew((sph_data **)&(*m)->data));
   PetscFunctionReturn(0);
 }

@@ -2,8 +2,8 @@
  * viscosity]); with continuity density it also accumulates d rho/dt in the
  * same pass over pairs, as LAMMPS' sph/taitwater does: one pair loop instead
  * of two. Pair arithmetic: sph_force_iact.h. The run-time choices (kernel,
- * continuity, artificial viscosity) select one of 12 specialised sweeps
- * before the loop. */
+ * continuity [+ density diffusion], artificial viscosity) select one of 18
+ * specialised sweeps before the loop. */
 #include "dmhs/sim.h"
 #include "dmhs/events.h"
 #include "sph_force_iact.h"
@@ -17,10 +17,11 @@ typedef struct {
   const double *restrict P, *restrict inv_rho; /* p/rho^2 and 1/rho per particle */
   double (*restrict a)[2];
   double *restrict drho;
-  double h, inv_h, norm, mu_sum, alpha, beta, c0;
+  const PetscInt *restrict type;
+  double h, inv_h, norm, mu_sum, alpha, beta, c0, delta_hs_c0;
 } force_args;
 
-SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artificial,
+SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artificial, int diffusion,
                             const force_args *A) {
   const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
   const double(*restrict x)[2] = A->x, (*restrict v_est)[2] = A->v_est,
@@ -50,6 +51,12 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
         const double q = sph_continuity_iact(rij, r, dwdr, vij);
         drho[i] += mass[j] * q;
         drho[j] += mass[i] * q;
+        /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
+        if (diffusion && A->type[i] != PTYPE_WALL && A->type[j] != PTYPE_WALL) {
+          const double D = sph_density_diffusion_iact(r, dwdr, rho[i], rho[j], A->delta_hs_c0);
+          drho[i] += mass[j] * inv_rho[j] * D;
+          drho[j] -= mass[i] * inv_rho[i] * D;
+        }
       }
     }
     /* ghost rows receive contributions too; they are discarded (Newton's third
@@ -61,26 +68,34 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
   }
 }
 
-#define SWEEP(name, K, C, AV)                                                                     \
-  static void name(const force_args *A) { force_sweep(K, C, AV, A); }
-SWEEP(sweep_lucy, SPH_KERNEL_LUCY, 0, 0)
-SWEEP(sweep_lucy_c, SPH_KERNEL_LUCY, 1, 0)
-SWEEP(sweep_lucy_av, SPH_KERNEL_LUCY, 0, 1)
-SWEEP(sweep_lucy_c_av, SPH_KERNEL_LUCY, 1, 1)
-SWEEP(sweep_cubic, SPH_KERNEL_CUBIC, 0, 0)
-SWEEP(sweep_cubic_c, SPH_KERNEL_CUBIC, 1, 0)
-SWEEP(sweep_cubic_av, SPH_KERNEL_CUBIC, 0, 1)
-SWEEP(sweep_cubic_c_av, SPH_KERNEL_CUBIC, 1, 1)
-SWEEP(sweep_wendland, SPH_KERNEL_WENDLAND, 0, 0)
-SWEEP(sweep_wendland_c, SPH_KERNEL_WENDLAND, 1, 0)
-SWEEP(sweep_wendland_av, SPH_KERNEL_WENDLAND, 0, 1)
-SWEEP(sweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1)
+#define SWEEP(name, K, C, AV, D)                                                                  \
+  static void name(const force_args *A) { force_sweep(K, C, AV, D, A); }
+SWEEP(sweep_lucy, SPH_KERNEL_LUCY, 0, 0, 0)
+SWEEP(sweep_lucy_c, SPH_KERNEL_LUCY, 1, 0, 0)
+SWEEP(sweep_lucy_av, SPH_KERNEL_LUCY, 0, 1, 0)
+SWEEP(sweep_lucy_c_av, SPH_KERNEL_LUCY, 1, 1, 0)
+SWEEP(sweep_lucy_cd, SPH_KERNEL_LUCY, 1, 0, 1)
+SWEEP(sweep_lucy_cd_av, SPH_KERNEL_LUCY, 1, 1, 1)
+SWEEP(sweep_cubic, SPH_KERNEL_CUBIC, 0, 0, 0)
+SWEEP(sweep_cubic_c, SPH_KERNEL_CUBIC, 1, 0, 0)
+SWEEP(sweep_cubic_av, SPH_KERNEL_CUBIC, 0, 1, 0)
+SWEEP(sweep_cubic_c_av, SPH_KERNEL_CUBIC, 1, 1, 0)
+SWEEP(sweep_cubic_cd, SPH_KERNEL_CUBIC, 1, 0, 1)
+SWEEP(sweep_cubic_cd_av, SPH_KERNEL_CUBIC, 1, 1, 1)
+SWEEP(sweep_wendland, SPH_KERNEL_WENDLAND, 0, 0, 0)
+SWEEP(sweep_wendland_c, SPH_KERNEL_WENDLAND, 1, 0, 0)
+SWEEP(sweep_wendland_av, SPH_KERNEL_WENDLAND, 0, 1, 0)
+SWEEP(sweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1, 0)
+SWEEP(sweep_wendland_cd, SPH_KERNEL_WENDLAND, 1, 0, 1)
+SWEEP(sweep_wendland_cd_av, SPH_KERNEL_WENDLAND, 1, 1, 1)
 
-/* [kernel][continuity][artificial viscosity] */
-static void (*const sweeps[3][2][2])(const force_args *) = {
-    {{sweep_lucy, sweep_lucy_av}, {sweep_lucy_c, sweep_lucy_c_av}},
-    {{sweep_cubic, sweep_cubic_av}, {sweep_cubic_c, sweep_cubic_c_av}},
-    {{sweep_wendland, sweep_wendland_av}, {sweep_wendland_c, sweep_wendland_c_av}},
+/* [kernel][density: summation, continuity, continuity + diffusion][artificial viscosity] */
+static void (*const sweeps[3][3][2])(const force_args *) = {
+    {{sweep_lucy, sweep_lucy_av}, {sweep_lucy_c, sweep_lucy_c_av}, {sweep_lucy_cd, sweep_lucy_cd_av}},
+    {{sweep_cubic, sweep_cubic_av}, {sweep_cubic_c, sweep_cubic_c_av}, {sweep_cubic_cd, sweep_cubic_cd_av}},
+    {{sweep_wendland, sweep_wendland_av},
+     {sweep_wendland_c, sweep_wendland_c_av},
+     {sweep_wendland_cd, sweep_wendland_cd_av}},
 };
 
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
@@ -113,6 +128,7 @@ PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
       .inv_rho = work->inv_rho,
       .a = ps->a,
       .drho = ps->drho,
+      .type = ps->type,
       .h = sp->h,
       .inv_h = 1.0 / sp->h,
       .norm = sph_kernel_norm(sp->kernel, 2, sp->h),
@@ -121,8 +137,10 @@ PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
       .alpha = sp->av_alpha,
       .beta = sp->av_beta,
       .c0 = sp->c0,
+      .delta_hs_c0 = sp->delta * 0.5 * sp->h * sp->c0, /* smoothing length h_s = h/2 */
   };
-  sweeps[sp->kernel][continuity][artificial](&A);
+  const int density = continuity ? (sp->delta > 0 ? 2 : 1) : 0;
+  sweeps[sp->kernel][density][artificial](&A);
   PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs + 4.0 * (double)n));
   PetscCall(PetscLogEventEnd(events.sph_force, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -10,6 +10,8 @@ typedef struct {
   double *P, *inv_rho;
 } sph_force_work;
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work);
+/* sph_stress.c: the SPH virial, pressure force and shear rate (stress diagnostics) */
+PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
 PetscErrorCode sph_density_summation(sim *s);
 /* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */

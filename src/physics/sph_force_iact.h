@@ -53,4 +53,17 @@ SPH_INLINE double sph_continuity_iact(const double rij[2], double r, double dwdr
   return dwdr / r * (vij[0] * rij[0] + vij[1] * rij[1]);
 }
 
+/* Density diffusion (delta-SPH, Molteni & Colagrossi 2009, Comput. Phys.
+ * Commun. 180:861) added to the continuity equation of liquid and solid pairs:
+ *   d rho_i/dt += delta h_s c0 sum_j V_j psi_ij . grad_i W_ij,
+ *   psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / r^2,
+ * i.e. + 2 delta h_s c0 V_j (rho_j - rho_i) (-dW/dr) / r. It damps the
+ * density (acoustic) noise that the continuity equation otherwise keeps at
+ * low viscosity, without a shear viscosity. Returns the pair scalar
+ * D = 2 delta h_s c0 (rho_j - rho_i) (-dW/dr) / r: rho_i gains V_j D, rho_j loses V_i D. */
+SPH_INLINE double sph_density_diffusion_iact(double r, double dwdr, double rho_i, double rho_j,
+                                             double delta_hs_c0) {
+  return 2.0 * delta_hs_c0 * (rho_j - rho_i) * (-dwdr) / r;
+}
+
 #endif
