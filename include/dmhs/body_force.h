@@ -7,5 +7,8 @@
 PetscErrorCode body_force_module_create(module **m);
 /* The scene's default before the options pass (e.g. Poiseuille's driving force). */
 PetscErrorCode body_force_set_default(module *m, double fx, double fy);
+/* The drive as set by the options (after the options pass): F = (Fx, Fy) [m/s^2] and the
+ * period T [s] of F sin(2 pi t/T), 0 when constant. Either pointer may be NULL. */
+PetscErrorCode body_force_get(module *m, double F[2], double *period);
 
 #endif

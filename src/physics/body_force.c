@@ -28,6 +28,17 @@ PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode body_force_get(module *m, double F[DMHS_DIM], double *period) {
+  const body_force_data *d = m->data;
+  PetscFunctionBeginUser;
+  PetscCheck(d && !strcmp(m->name, "body_force"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "body_force_get: module %s is not body_force", m->name);
+  if (F)
+    for (int k = 0; k < DMHS_DIM; k++) F[k] = d->F[k];
+  if (period) *period = d->period;
+  PetscFunctionReturn(0);
+}
+
 static void body_force_value(const body_force_data *d, double t, double a[DMHS_DIM]) {
   const double phase = d->period > 0 ? sin(2.0 * M_PI * t / d->period) : 1.0;
   a[0] = d->F[0] * phase;
