@@ -27,5 +27,10 @@ for ((i = 1; i <= $#; i++)); do
 done
 outdir="${outdir:-output}"
 if [ -f "$outdir/error.csv" ]; then
-  /usr/bin/python3 "$repo/scripts/post/plot_channel.py" "$outdir"
+  # a pulsatile drive (-body_force_period T > 0 in the run's options) has its own plots
+  if grep -Eq -- '-body_force_period +[0-9.]*[1-9]' "$outdir/run.json" 2>/dev/null; then
+    /usr/bin/python3 "$repo/scripts/post/plot_womersley.py" "$outdir"
+  else
+    /usr/bin/python3 "$repo/scripts/post/plot_channel.py" "$outdir"
+  fi
 fi

@@ -9,7 +9,8 @@ PetscErrorCode body_force_module_create(module **m);
 PetscErrorCode body_force_set_default(module *m, double fx, double fy);
 /* The scene's default period T of F sin(2 pi t/T) (0 = constant). */
 PetscErrorCode body_force_set_default_period(module *m, double period);
-/* The resolved drive F and period T (after the options pass). */
-PetscErrorCode body_force_get_drive(module *m, double F[], double *period);
+/* The drive as set by the options (after the options pass): F = (Fx, Fy) [m/s^2] and the
+ * period T [s] of F sin(2 pi t/T), 0 when constant. Either pointer may be NULL. */
+PetscErrorCode body_force_get(module *m, double F[2], double *period);
 
 #endif

@@ -2,7 +2,12 @@
  * <output_dir>/error.csv (step,t,wall_s,l2,linf) every output interval, where
  * l2 is the RMS and linf the max of (v_x - v_exact) / v_ref over fluid particles;
  * at each report time (default 0.01, 0.1, 1 s) also profile_t<t>.csv
- * (y,vx,vx_exact per fluid particle), and a table at the end of the run. */
+ * (y,vx,vx_exact per fluid particle), and a table at the end of the run.
+ * v_ref is one fixed speed for the whole run, chosen by the scene: the steady peak
+ * F l^2/(8 nu) (Poiseuille), the plate speed (Couette), and for a pulsatile drive
+ * g0 sin(w t) the steady-periodic centreline amplitude |g0/(i w) (1 - 1/cosh(kappa a))|,
+ * kappa = sqrt(i w/nu): a pulsatile flow passes through zero, so an error relative to
+ * the current speed would be unbounded there. */
 #ifndef DMHS_ERRORS_H
 #define DMHS_ERRORS_H
 #include <petscsys.h>
@@ -15,7 +20,7 @@ typedef double (*errors_exact_fn)(double y, double t, const void *ctx);
 typedef struct errors {
   errors_exact_fn exact;
   const void *ctx;
-  double v_ref; /* normalisation [m/s] */
+  double v_ref; /* normalisation [m/s], fixed for the run */
   FILE *csv;    /* rank 0 only */
   PetscInt n_reports, next_report;
   double report_t[ERRORS_MAX_REPORTS];

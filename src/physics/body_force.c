@@ -28,11 +28,14 @@ PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode body_force_get_drive(module *m, double F[], double *period) {
+PetscErrorCode body_force_get(module *m, double F[DMHS_DIM], double *period) {
   const body_force_data *d = m->data;
   PetscFunctionBeginUser;
-  for (int k = 0; k < DMHS_DIM; k++) F[k] = d->F[k];
-  *period = d->period;
+  PetscCheck(d && !strcmp(m->name, "body_force"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "body_force_get: module %s is not body_force", m->name);
+  if (F)
+    for (int k = 0; k < DMHS_DIM; k++) F[k] = d->F[k];
+  if (period) *period = d->period;
   PetscFunctionReturn(0);
 }
 

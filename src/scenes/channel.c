@@ -1,8 +1,10 @@
 /* Plane channel (SPEC 4.1): nx x ny liquid particles on a square lattice of
  * spacing dx = l/ny between wall layers, periodic in x. The lower wall is at
  * rest; the upper one moves at -wall_speed (Couette). Poiseuille flow is driven
- * by the body force module. The liquid's v_x is compared with the series
- * solution as the run goes (diag/errors.c). */
+ * by the body force module: constant (start-up Poiseuille) or, with
+ * -body_force_period T > 0, pulsatile g0 sin(2 pi t/T) (Womersley start-up).
+ * The liquid's v_x is compared with the series solution as the run goes
+ * (diag/errors.c). */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/channel.h"
@@ -16,7 +18,8 @@ typedef struct {
   PetscInt nx, ny;
   PetscInt wall_layers;  /* 0 = enough to fill the kernel support */
   double wall_speed;     /* upper plate (Couette) [m/s] */
-  double drive;          /* F (Poiseuille) [m/s^2], read back from the body force module */
+  double drive;          /* F or g0 (Poiseuille) [m/s^2], read back from the body force module */
+  double omega;          /* 2 pi/T of a pulsatile drive [1/s], 0 = constant */
   double nu;             /* for the exact solution */
   module *body;
   errors err;
@@ -25,6 +28,11 @@ typedef struct {
 static double exact_poiseuille(double y, double t, const void *ctx) {
   const channel_data *c = ctx;
   return analytic_poiseuille(y, t, c->drive, c->nu, c->width);
+}
+
+static double exact_womersley(double y, double t, const void *ctx) {
+  const channel_data *c = ctx;
+  return analytic_womersley(y, t, c->drive, c->omega, c->nu, c->width);
 }
 
 static double exact_couette(double y, double t, const void *ctx) {
@@ -102,9 +110,26 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
     }
   c->nu = s->sph.nu;
   if (c->flow == CHANNEL_POISEUILLE) {
-    c->drive = s->body_accel[0];
-    PetscCheck(c->nu > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "poiseuille: -sph_nu must be > 0 for a steady flow");
-    PetscCall(errors_setup(&c->err, s, exact_poiseuille, c, c->drive * c->width * c->width / (8.0 * c->nu)));
+    double F[DMHS_DIM], period;
+    PetscCall(body_force_get(c->body, F, &period));
+    PetscCheck(c->nu > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "poiseuille: -sph_nu must be > 0 for the series solution (got %g)", c->nu);
+    if (period > 0) {
+      /* a pulsatile flow passes through zero: the error is normalised by the fixed
+       * steady-periodic centreline amplitude */
+      c->drive = F[0];
+      c->omega = 2.0 * M_PI / period;
+      PetscCheck(c->drive != 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+                 "poiseuille: with -body_force_period %g s the drive along x is 0: set "
+                 "-body_force_amplitude g0 (or -body_force g0,0)",
+                 period);
+      PetscCall(errors_setup(&c->err, s, exact_womersley, c,
+                             analytic_womersley_amplitude(c->drive, c->omega, c->nu, c->width)));
+    } else {
+      c->drive = s->body_accel[0];
+      const double peak = c->drive * c->width * c->width / (8.0 * c->nu);
+      PetscCall(errors_setup(&c->err, s, exact_poiseuille, c, peak));
+    }
   } else {
     PetscCall(errors_setup(&c->err, s, exact_couette, c, fabs(c->wall_speed)));
   }

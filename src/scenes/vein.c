@@ -334,7 +334,7 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
                         n_free * dx, theta * 180.0 / M_PI, x_root, 2 * (0.5 * v->width - n_free * dx * sin(theta))));
 
   /* the diagnostics object, with what they need of the geometry */
-  PetscCall(body_force_get_drive(v->body, F, &T));
+  PetscCall(body_force_get(v->body, F, &T));
   v->lay.dx = dx;
   v->lay.width = v->width;
   v->lay.period_T = T;

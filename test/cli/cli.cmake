@@ -49,3 +49,6 @@ dmhs_cli_fail(cli_bad_body_force_type "-body_force_types: 'wall' is not fluid or
 add_test(NAME cli_slurm_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
   ${DMHS_CLI_OUT}/slurm)
 set_tests_properties(cli_slurm_script PROPERTIES LABELS cli TIMEOUT 60)
+# a pulsatile poiseuille run needs a drive along x to compare with the Womersley series
+dmhs_cli_fail(cli_pulsatile_without_drive "-body_force_period 0.206 s the drive along x is 0: set -body_force_amplitude"
+  -options_file ${DMHS_INPUT}/womersley-quick.opts -quiet -body_force_amplitude 0 -output_dir ${DMHS_CLI_OUT}/k)
