@@ -466,12 +466,14 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
   PetscCall(PetscPrintf(s->comm, "vein: gap between the tips %.4g .. %.4g m (rest %.4g m); crossings %" PetscInt64_FMT
                                  "; max |rho/rho0 - 1| %.3g, max Mach %.3g\n",
                         v->gap_min, v->gap_max, v->lay.rest_gap, v->crossings, v->rho_dev_max, v->mach_max));
-  if (v->probe_gid >= 0)
+  if (v->probe_gid >= 0) {
+    char peak_s[64] = "n/a: no whole cycle after the point was chosen";
+    if (n_cycles) PetscCall(PetscSNPrintf(peak_s, sizeof(peak_s), "%.4g +- %.3g Pa", peak_mean, peak_std));
     PetscCall(PetscPrintf(s->comm,
                           "vein: measurement point gid %" PetscInt64_FMT ": displacement %.4g +- %.3g m (time average, "
-                          "%" PetscInt_FMT " rows), peak stress per cycle %.4g +- %.3g Pa (%" PetscInt_FMT
-                          " cycles)\n",
-                          v->probe_gid, disp_mean, disp_std, v->n_hist, peak_mean, peak_std, n_cycles));
+                          "%" PetscInt_FMT " rows), peak stress per cycle %s (%" PetscInt_FMT " cycles)\n",
+                          v->probe_gid, disp_mean, disp_std, v->n_hist, peak_s, n_cycles));
+  }
   if (s->rank == 0) {
     char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
     PetscCall(sim_output_path(s, "vein-summary.csv", path, sizeof(path)));

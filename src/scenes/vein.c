@@ -134,6 +134,11 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
    * a plain channel at rest, dt = 0.47 of the sound-speed limit, at t ~ 0.08 s);
    * delta-SPH diffusion damps it without adding shear viscosity (doc/theory.md) */
   s->sph.delta = 0.1;
+  /* behind the valve the jet's shear brings liquid particles together faster
+   * than the blood's viscosity resolves at these spacings (pairs at 0.12 dx and
+   * +-1e4 Pa spikes measured at dx = 5e-4 m); a weak Monaghan viscosity
+   * (effective nu ~ alpha c0 h/8 = 3e-6 m^2/s at dx = 1e-4 m) stops it */
+  s->sph.av_alpha = 0.01;
   PetscCall(fields_enable("body"));
   PetscCall(fields_enable("side"));
   PetscCall(stress_enable());

@@ -1,0 +1,200 @@
+"""Readers shared by the plot_vein_*.py scripts (scene vein, doc/user-guide.md).
+
+  read_csv(path, need)       vein.csv / vein-sinus.csv: columns as float arrays (an
+                             empty cell is NaN), and the '# vein: ...' comment as a dict
+  read_summary(path, need)   vein-summary.csv: key -> float (empty -> NaN)
+  snapshots(run_dir)         [(time, path)] of snap_*.h5, sorted by time
+  nearest_snapshot(run_dir, t)
+  read_snapshot(path, names) {'time': t, name: array} from /particles (and 'bonds')
+  masks(snapshot)            fluid, wall and leaflet (body > 0) masks
+  case_title(info)           'vein: L = 25.5 mm, g0 = 0.5 m/s^2, ...'
+
+Every reader calls fail() with a one-line message naming the file when it is
+missing, empty or lacks a column or dataset; fail() exits with status 1.
+"""
+import csv
+import glob
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+PROG = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else "plot_vein"
+FLUID, WALL, SOLID = 0, 1, 2
+
+
+def fail(msg):
+    sys.exit(f"{PROG}: {msg}")
+
+
+def _number(cell):
+    cell = cell.strip()
+    if cell == "":
+        return math.nan
+    try:
+        return float(cell)
+    except ValueError:
+        return None
+
+
+def parse_comment(line):
+    """'# vein: leaflet 0.0255 m, g0 0.5 m/s^2, k_a 0.01 J (at dx = 1e-4 m), T 0.5 s, ...'
+    -> {'leaflet': 0.0255, 'g0': 0.5, 'k_a': 0.01, 'T': 0.5, 'dx': 0.0005, 'rest gap': 0.003}."""
+    text = re.sub(r"\([^)]*\)", "", line.lstrip("#").strip())
+    text = text.split(":", 1)[1] if ":" in text else text
+    info = {}
+    for part in text.split(","):
+        m = re.match(r"\s*([A-Za-z_][A-Za-z_0-9 ]*?)\s+([-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?)\b", part)
+        if m:
+            info[m.group(1)] = float(m.group(2))
+    return info
+
+
+def read_csv(path, need=()):
+    """Returns (columns, comment): columns maps each header name to a float array."""
+    if not os.path.isfile(path):
+        fail(f"{path}: no such file")
+    with open(path, newline="") as f:
+        lines = f.read().splitlines()
+    comment = {}
+    while lines and lines[0].startswith("#"):
+        comment.update(parse_comment(lines.pop(0)))
+    lines = [ln for ln in lines if ln.strip()]
+    if len(lines) < 2:
+        fail(f"{path}: empty (no header or no data rows)")
+    rows = list(csv.reader(lines))
+    header = [h.strip() for h in rows[0]]
+    missing = [c for c in need if c not in header]
+    if missing:
+        fail(f"{path}: no column {', '.join(missing)} (header: {','.join(header)})")
+    data = {h: np.full(len(rows) - 1, math.nan) for h in header}
+    for k, row in enumerate(rows[1:]):
+        for h, cell in zip(header, row):
+            value = _number(cell)
+            if value is None:
+                fail(f"{path}:{k + 2}: column {h}: not a number: {cell!r}")
+            data[h][k] = value
+    return data, comment
+
+
+def read_summary(path, need=()):
+    """vein-summary.csv as {key: float}; an empty value is NaN."""
+    if not os.path.isfile(path):
+        fail(f"{path}: no such file")
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    if rows and rows[0][:1] == ["key"]:
+        rows = rows[1:]
+    if not rows:
+        fail(f"{path}: empty (no key,value rows)")
+    out = {}
+    for r in rows:
+        value = _number(r[1] if len(r) > 1 else "")
+        if value is None:
+            fail(f"{path}: {r[0]}: not a number: {r[1]!r}")
+        out[r[0].strip()] = value
+    missing = [k for k in need if k not in out]
+    if missing:
+        fail(f"{path}: no key {', '.join(missing)}")
+    return out
+
+
+def snapshots(run_dir):
+    import h5py
+
+    paths = sorted(glob.glob(os.path.join(run_dir, "snap_*.h5")))
+    if not paths:
+        fail(f"{os.path.join(run_dir, 'snap_*.h5')}: no snapshot")
+    out = []
+    for p in paths:
+        try:
+            with h5py.File(p, "r") as f:
+                out.append((float(np.ravel(f.attrs["time"])[0]), p))
+        except (OSError, KeyError) as e:
+            fail(f"{p}: unreadable or no 'time' attribute ({e})")
+    return sorted(out)
+
+
+def nearest_snapshot(run_dir, t):
+    """(time, path) of the snapshot closest to t."""
+    snaps = snapshots(run_dir)
+    return min(snaps, key=lambda s: abs(s[0] - t))
+
+
+def read_snapshot(path, names=("x", "type")):
+    """{'time': t, 'scene': str, name: array} for the /particles datasets named (x as n x 2);
+    'bonds' gives /bonds/rows."""
+    import h5py
+
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        fail(f"{path}: cannot open ({e})")
+    with f:
+        out = {"time": float(np.ravel(f.attrs.get("time", [math.nan]))[0])}
+        scene = f.attrs.get("scene", b"")
+        out["scene"] = scene.decode() if isinstance(scene, bytes) else str(scene)
+        for name in names:
+            key = "bonds/rows" if name == "bonds" else f"particles/{name}"
+            if key not in f:
+                fail(f"{path}: no dataset /{key}")
+            a = f[key][()]
+            out[name] = a[:, :2] if name in ("x", "x0", "v", "a") else a
+    return out
+
+
+def masks(d):
+    """(fluid, wall, leaflet) masks of a snapshot read with 'type' and 'body': a
+    leaflet is every particle of body 1 or 2, its clamped root column included."""
+    leaflet = d["body"] > 0 if "body" in d else d["type"] == SOLID
+    return d["type"] == FLUID, (d["type"] == WALL) & ~leaflet, leaflet
+
+
+def case_title(info):
+    """A short name of the case from the CSV comment (or summary) keys."""
+    def get(*keys):
+        for k in keys:
+            if k in info and not math.isnan(info[k]):
+                return info[k]
+        return None
+
+    parts = []
+    L, g0, ka, T, dx = (get("leaflet", "leaflet_length"), get("g0"), get("k_a", "ka_ref"),
+                        get("T", "period"), get("dx"))
+    if L is not None:
+        parts.append(f"L = {L * 1e3:g} mm")
+    if g0 is not None:
+        parts.append(f"g0 = {g0:g} m/s²")
+    if ka is not None:
+        parts.append(f"k_a = {ka:g} J")
+    if T is not None:
+        parts.append(f"T = {T:g} s")
+    if dx is not None:
+        parts.append(f"dx = {dx * 1e3:g} mm")
+    return "vein: " + ", ".join(parts)
+
+
+def output_path(out, default_dir, name):
+    """--out given: a .png path, or a directory for `name`; otherwise default_dir/name."""
+    if out and out.lower().endswith(".png"):
+        path = out
+    else:
+        path = os.path.join(out or default_dir, name)
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    return path
+
+
+def require_dir(path):
+    if not os.path.isdir(path):
+        fail(f"{path}: no such directory")
+
+
+def marker_size(ax, spacing):
+    """Scatter size [pt^2] that draws a particle about `spacing` (data units of x) wide."""
+    fig = ax.figure
+    ax.apply_aspect()
+    x0, x1 = ax.get_xlim()
+    width_pt = ax.get_position().width * fig.get_figwidth() * 72.0
+    return (spacing * width_pt / abs(x1 - x0)) ** 2

@@ -1,0 +1,187 @@
+#!/usr/bin/env python3
+"""Vein quick checks (test/validation/vein.cmake, doc/validation.md "Vein").
+
+--mode run: runs input/vein-quick.opts (on --ranks N with --mpirun) and
+  asserts: the run reaches t_end (exit 0); no CSV holds a NaN or inf; the
+  tips' gap rises above --open x the rest gap while the flow goes forward and
+  falls below --close x the rest gap while it goes backward; the upper tip
+  stays above the lower one (the leaflets never pass through each other);
+  no fluid particle crossed a leaflet; max |rho/rho0 - 1| <= --max-rho-dev
+  and max Mach <= --max-mach in every row; the measurement point was chosen.
+  With --compare DIR: vein.csv, vein-sinus.csv and vein-summary.csv are
+  byte for byte those of DIR (rank-count invariance).
+--mode restart: runs to --t-stop (checkpoint), restarts from it to t_end,
+  and compares the three CSVs byte for byte with --compare DIR (the
+  uninterrupted run).
+"""
+import argparse, math, os, subprocess, sys
+
+CSVS = ["vein.csv", "vein-sinus.csv", "vein-summary.csv"]
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def run(args, outdir, extra, ranks):
+    os.makedirs(outdir, exist_ok=True)
+    cmd = [args.exe, "-options_file", args.opts, "-output_dir", outdir, "-quiet"] + extra
+    if ranks > 1:
+        cmd = args.mpirun.split() + ["-n", str(ranks)] + cmd
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(p.stdout[-2500:])
+    if p.returncode != 0:
+        fail(f"dmhs exited with {p.returncode}: {' '.join(cmd)}")
+
+
+def read_csv(path):
+    if not os.path.isfile(path) or os.path.getsize(path) == 0:
+        fail(f"{path} is missing or empty")
+    with open(path) as f:
+        lines = [l.rstrip("\n") for l in f if not l.startswith("#")]
+    names = lines[0].split(",")
+    rows = []
+    for n, l in enumerate(lines[1:], 2):
+        cells = l.split(",")
+        if len(cells) != len(names):
+            fail(f"{path}:{n}: {len(cells)} cells, header has {len(names)}")
+        row = []
+        for c in cells:
+            if c == "":
+                row.append(None)  # an empty cell is 'not defined yet', never a value
+                continue
+            v = float(c)
+            if not math.isfinite(v):
+                fail(f"{path}:{n}: non-finite value {c}")
+            row.append(v)
+        rows.append(row)
+    if not rows:
+        fail(f"{path} has no rows")
+    return names, rows
+
+
+def read_summary(path):
+    """key,value rows; a value is a finite number or empty (not measured), never NaN."""
+    if not os.path.isfile(path) or os.path.getsize(path) == 0:
+        fail(f"{path} is missing or empty")
+    out = {}
+    lines = open(path).read().splitlines()
+    if lines[0] != "key,value":
+        fail(f"{path}: header {lines[0]!r}")
+    for n, l in enumerate(lines[1:], 2):
+        k, v = l.split(",")
+        if v == "":
+            out[k] = None
+            continue
+        x = float(v)
+        if not math.isfinite(x):
+            fail(f"{path}:{n}: non-finite {k} = {v}")
+        out[k] = x
+    for k in ("gap_rest", "u_mean_peak_cycle1", "crossings", "rho_dev_max", "mach_max"):
+        if out.get(k) is None:
+            fail(f"{path}: {k} missing")
+    return out
+
+
+def col(names, rows, name):
+    if name not in names:
+        fail(f"column {name} missing")
+    k = names.index(name)
+    return [r[k] for r in rows]
+
+
+def opt_value(path, name):
+    """The last value of an option in an options file (and the files it includes)."""
+    value = None
+    for line in open(path):
+        w = line.split()
+        if len(w) >= 2 and w[0] == "-options_file":
+            inner = opt_value(w[1], name)
+            value = inner if inner is not None else value
+        elif len(w) >= 2 and w[0] == name:
+            value = w[1]
+    return value
+
+
+def mode_run(args):
+    run(args, args.outdir, args.extra.split(), args.ranks)
+    for c in CSVS[:2]:
+        read_csv(os.path.join(args.outdir, c))
+    summary = read_summary(os.path.join(args.outdir, "vein-summary.csv"))
+    names, rows = read_csv(os.path.join(args.outdir, "vein.csv"))
+    t = col(names, rows, "t")
+    t_end = float(opt_value(args.opts, "-t_end"))
+    if t[-1] < t_end * (1 - 1e-6) - 1e-4:
+        fail(f"vein.csv stops at t = {t[-1]} < t_end = {t_end}")
+    rest = summary["gap_rest"]
+    gap, u = col(names, rows, "gap"), col(names, rows, "u_mean")
+    fwd = [g for g, v in zip(gap, u) if v > 0]
+    bwd = [g for g, v in zip(gap, u) if v < 0]
+    if not fwd or not bwd:
+        fail("the flow did not go both ways")
+    print(f"  rest gap {rest:.4g} m; forward flow: gap up to {max(fwd):.4g} m; backward flow: down to {min(bwd):.4g} m")
+    if max(fwd) < args.open * rest:
+        fail(f"the valve did not open: largest gap in forward flow {max(fwd):.4g} m < {args.open} x rest")
+    if min(bwd) > args.close * rest:
+        fail(f"the valve did not close: smallest gap in backward flow {min(bwd):.4g} m > {args.close} x rest")
+    up, lo = col(names, rows, "tip_upper_y"), col(names, rows, "tip_lower_y")
+    if any(a <= b for a, b in zip(up, lo)):
+        fail("the upper tip went below the lower one: the leaflets passed through each other")
+    cr = col(names, rows, "crossings")
+    if cr[-1] != 0:
+        fail(f"{int(cr[-1])} fluid particles crossed a leaflet")
+    rd, ma = max(col(names, rows, "rho_dev")), max(col(names, rows, "mach"))
+    print(f"  crossings 0; max |rho/rho0 - 1| {rd:.3g}; max Mach {ma:.3g}")
+    if rd > args.max_rho_dev:
+        fail(f"density deviation {rd:.3g} > {args.max_rho_dev}")
+    if ma > args.max_mach:
+        fail(f"Mach {ma:.3g} > {args.max_mach}")
+    probe = [p for p in col(names, rows, "probe_gid") if p is not None]
+    if not probe or len(set(probe)) != 1:
+        fail("the measurement point was not chosen (or changed)")
+    if args.compare:
+        compare(args.outdir, args.compare)
+    print("PASS")
+
+
+def compare(a, b):
+    for c in CSVS:
+        pa, pb = os.path.join(a, c), os.path.join(b, c)
+        if open(pa, "rb").read() != open(pb, "rb").read():
+            fail(f"{pa} differs from {pb}")
+        print(f"  {c}: identical to {pb}")
+
+
+def mode_restart(args):
+    first = os.path.join(args.outdir, "first")
+    run(args, args.outdir, args.extra.split() + ["-t_end", str(args.t_stop)], args.ranks)
+    run(args, args.outdir, args.extra.split() + ["-restart", os.path.join(args.outdir, "checkpoint.h5")],
+        args.restart_ranks)
+    del first
+    compare(args.outdir, args.compare)
+    print("PASS")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--exe", required=True)
+    p.add_argument("--opts", required=True)
+    p.add_argument("--outdir", required=True)
+    p.add_argument("--mode", default="run", choices=["run", "restart"])
+    p.add_argument("--ranks", type=int, default=1)
+    p.add_argument("--restart-ranks", type=int, default=1)
+    p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--extra", default="")
+    p.add_argument("--compare")
+    p.add_argument("--t-stop", type=float, default=0.0)
+    p.add_argument("--open", type=float, default=1.2)
+    p.add_argument("--close", type=float, default=0.9)
+    p.add_argument("--max-rho-dev", type=float, default=0.03)
+    p.add_argument("--max-mach", type=float, default=0.1)
+    args = p.parse_args()
+    mode_run(args) if args.mode == "run" else mode_restart(args)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,77 @@
+# Plots of the vein quick runs (scripts/post/plot_vein_*.py): each script writes
+# its PNG into ${DMHS_VEIN_OUT}/plots (emptied first by validation_vein_plots_clean)
+# and fails on a missing or incomplete input; validation_vein_plots_check then
+# asserts that every PNG exists and is larger than 10 kB. The file that includes
+# this one defines DMHS_PYTHON, DMHS_VEIN_OUT and the fixtures vein_quick and
+# vein_quick_2ranks.
+#
+# Run as a script, it is that check:
+#   cmake -P vein_plots.cmake PNG...   (exit 1 when a PNG is missing or <= 10 kB)
+if(CMAKE_SCRIPT_MODE_FILE)
+  math(EXPR last "${CMAKE_ARGC} - 1")
+  if(last LESS 3)
+    message(FATAL_ERROR "usage: cmake -P vein_plots.cmake PNG...")
+  endif()
+  foreach(i RANGE 3 ${last}) # CMAKE_ARGV0..2: cmake -P <this file>
+    set(png "${CMAKE_ARGV${i}}")
+    if(NOT EXISTS "${png}")
+      message(SEND_ERROR "${png}: missing")
+      continue()
+    endif()
+    file(SIZE "${png}" size)
+    if(size LESS_EQUAL 10240)
+      message(SEND_ERROR "${png}: ${size} bytes, not larger than 10 kB")
+    else()
+      message(STATUS "${png}: ${size} bytes")
+    endif()
+  endforeach()
+  return()
+endif()
+
+# test/CMakeLists.txt includes every validation/*.cmake: without the vein
+# outputs defined yet this is a no-op, and the tests are added once
+if(NOT DEFINED DMHS_VEIN_OUT OR NOT DEFINED DMHS_PYTHON)
+  return()
+endif()
+include_guard(GLOBAL)
+
+set(DMHS_VEIN_PLOTS ${DMHS_VEIN_OUT}/plots)
+set(DMHS_VEIN_POST ${PROJECT_SOURCE_DIR}/scripts/post)
+add_test(NAME validation_vein_plots_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${DMHS_VEIN_PLOTS})
+set_tests_properties(validation_vein_plots_clean PROPERTIES LABELS validation TIMEOUT 30
+                     FIXTURES_SETUP vein_plots_clean)
+
+# four panels of the liquid at the peak flow (shear rate, |sigma|, pressure force, |v|)
+add_test(NAME validation_vein_plot_fields
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_fields.py ${DMHS_VEIN_OUT}/quick
+                 --out ${DMHS_VEIN_PLOTS}/vein_fields.png)
+# the sinus liquid coloured by displacement, once per period
+add_test(NAME validation_vein_plot_sinus
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_sinus.py ${DMHS_VEIN_OUT}/quick
+                 --out ${DMHS_VEIN_PLOTS}/vein_sinus.png)
+# the measurement point's displacement and stress, inlet velocities, tip gap against t
+add_test(NAME validation_vein_plot_probe
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_probe.py ${DMHS_VEIN_OUT}/quick
+                 --out ${DMHS_VEIN_PLOTS}/vein_probe.png)
+# the annotated geometry at t = 0 and the leaflet root
+add_test(NAME validation_vein_plot_geometry
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_geometry.py ${DMHS_VEIN_OUT}/quick
+                 --out ${DMHS_VEIN_PLOTS}/vein_geometry.png)
+foreach(p fields sinus probe geometry)
+  set_tests_properties(validation_vein_plot_${p} PROPERTIES LABELS validation TIMEOUT 120
+                       FIXTURES_REQUIRED "vein_quick;vein_plots_clean" FIXTURES_SETUP vein_plots)
+endforeach()
+# the study figures over the two quick runs (1 and 2 ranks)
+add_test(NAME validation_vein_plot_study
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_study.py ${DMHS_VEIN_OUT}/quick
+                 ${DMHS_VEIN_OUT}/quick-2ranks --out ${DMHS_VEIN_PLOTS}/)
+set_tests_properties(validation_vein_plot_study PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
+
+add_test(NAME validation_vein_plots_check
+         COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_LIST_FILE}
+                 ${DMHS_VEIN_PLOTS}/vein_fields.png ${DMHS_VEIN_PLOTS}/vein_sinus.png
+                 ${DMHS_VEIN_PLOTS}/vein_probe.png ${DMHS_VEIN_PLOTS}/vein_geometry.png
+                 ${DMHS_VEIN_PLOTS}/vein_study_ka.png ${DMHS_VEIN_PLOTS}/vein_study_velocity.png)
+set_tests_properties(validation_vein_plots_check PROPERTIES LABELS validation TIMEOUT 30
+                     FIXTURES_REQUIRED vein_plots)
