@@ -52,3 +52,7 @@ set_tests_properties(cli_slurm_script PROPERTIES LABELS cli TIMEOUT 60)
 # a pulsatile poiseuille run needs a drive along x to compare with the Womersley series
 dmhs_cli_fail(cli_pulsatile_without_drive "-body_force_period 0.206 s the drive along x is 0: set -body_force_amplitude"
   -options_file ${DMHS_INPUT}/womersley-quick.opts -quiet -body_force_amplitude 0 -output_dir ${DMHS_CLI_OUT}/k)
+# scripts/slurm/vein-study.sbatch: an array task runs its study run, skips it when completed, continues it after a signal
+add_test(NAME cli_vein_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_study.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
+  ${DMHS_CLI_OUT}/vein-study)
+set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
