@@ -13,8 +13,9 @@
 #include "dmhs/stress.h"
 #include "dmhs/fields.h"
 
-static const char *const stress_fields[] = {"shear_rate", "stress_xx", "stress_xy", "stress_yy",
-                                            "stress_mag", "pressure_force", "speed", "displacement"};
+static const char *const stress_fields[] = {"shear_rate", "stress_xx",   "stress_xy",
+                                            "stress_yy",  "stress_mag",  "pressure_force",
+                                            "speed",      "displacement"};
 
 PetscErrorCode stress_enable(void) {
   PetscFunctionBeginUser;
@@ -28,17 +29,20 @@ PetscErrorCode stress_compute(sim *s) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
   double(*W)[3];
   PetscFunctionBeginUser;
-  PetscCheck(ps->stress_mag, s->comm, PETSC_ERR_ORDER, "stress_compute: the scene did not call stress_enable");
+  PetscCheck(ps->stress_mag, s->comm, PETSC_ERR_ORDER,
+             "stress_compute: the scene did not call stress_enable");
   PetscCall(PetscCalloc1(n + 1, &W));
   for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->virial) PetscCall(s->modules[m]->virial(s->modules[m], s, W));
+    if (s->modules[m]->virial)
+      PetscCall(s->modules[m]->virial(s->modules[m], s, W));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     const double inv_v = ps->rho[i] / ps->mass[i];
     ps->stress_xx[i] = W[i][0] * inv_v;
     ps->stress_xy[i] = W[i][1] * inv_v;
     ps->stress_yy[i] = W[i][2] * inv_v;
-    ps->stress_mag[i] = sqrt(ps->stress_xx[i] * ps->stress_xx[i] + 2.0 * ps->stress_xy[i] * ps->stress_xy[i] +
-                             ps->stress_yy[i] * ps->stress_yy[i]);
+    ps->stress_mag[i] =
+        sqrt(ps->stress_xx[i] * ps->stress_xx[i] + 2.0 * ps->stress_xy[i] * ps->stress_xy[i] +
+             ps->stress_yy[i] * ps->stress_yy[i]);
     ps->speed[i] = hypot(ps->v[i][0], ps->v[i][1]);
     double d[2] = {ps->x[i][0] - ps->x0[i][0], ps->x[i][1] - ps->x0[i][1]};
     domain_min_image(&s->dom, d);

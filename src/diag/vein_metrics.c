@@ -40,12 +40,12 @@
 
 struct vein_metrics {
   vein_layout lay;
-  PetscInt n_leaf[2];     /* particles per leaflet (2 x columns) */
-  double (*leaf_x)[2];    /* every leaflet particle, replicated: [leaflet 0 | leaflet 1] */
+  PetscInt n_leaf[2];  /* particles per leaflet (2 x columns) */
+  double (*leaf_x)[2]; /* every leaflet particle, replicated: [leaflet 0 | leaflet 1] */
   PetscInt64 crossings_local;
-  PetscInt64 crossings;   /* over all ranks, at the last output */
-  PetscInt64 probe_gid;   /* -1 until chosen */
-  PetscInt next_cycle;    /* next cycle whose sinus rows are due */
+  PetscInt64 crossings; /* over all ranks, at the last output */
+  PetscInt64 probe_gid; /* -1 until chosen */
+  PetscInt next_cycle;  /* next cycle whose sinus rows are due */
   /* history (replicated) of the measurement point, for the statistics */
   PetscInt n_hist, cap_hist;
   double *hist_t, *hist_stress, *hist_disp;
@@ -61,7 +61,8 @@ PetscErrorCode vein_metrics_create(sim *s, const vein_layout *lay, vein_metrics 
   PetscCall(PetscNew(&v));
   *out = v;
   v->lay = *lay;
-  for (int k = 0; k < 2; k++) v->n_leaf[k] = 2 * lay->leaflet[k].n_columns;
+  for (int k = 0; k < 2; k++)
+    v->n_leaf[k] = 2 * lay->leaflet[k].n_columns;
   PetscCall(PetscMalloc1(v->n_leaf[0] + v->n_leaf[1], &v->leaf_x));
   v->probe_gid = -1;
   v->gap_min = INFINITY;
@@ -73,9 +74,12 @@ PetscErrorCode vein_metrics_create(sim *s, const vein_layout *lay, vein_metrics 
 PetscErrorCode vein_metrics_destroy(vein_metrics **vp) {
   vein_metrics *v = *vp;
   PetscFunctionBeginUser;
-  if (!v) PetscFunctionReturn(0);
-  if (v->csv) fclose(v->csv);
-  if (v->sinus) fclose(v->sinus);
+  if (!v)
+    PetscFunctionReturn(0);
+  if (v->csv)
+    fclose(v->csv);
+  if (v->sinus)
+    fclose(v->sinus);
   PetscCall(PetscFree(v->leaf_x));
   PetscCall(PetscFree3(v->hist_t, v->hist_stress, v->hist_disp));
   PetscCall(PetscFree(*vp));
@@ -102,11 +106,13 @@ static PetscErrorCode vein_gather_leaflets(vein_metrics *v, sim *s) {
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
     int w;
     const PetscInt k = vein_leaf_index(v, s->ps.gid[i], &w);
-    if (k < 0) continue;
+    if (k < 0)
+      continue;
     v->leaf_x[k][0] = s->ps.x[i][0];
     v->leaf_x[k][1] = s->ps.x[i][1];
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v->leaf_x, (PetscMPIInt)(2 * n), MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(
+      MPI_Allreduce(MPI_IN_PLACE, v->leaf_x, (PetscMPIInt)(2 * n), MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }
 
@@ -136,7 +142,8 @@ static int vein_side_of(const vein_metrics *v, const domain *dom, int w, const d
       cb = c;
     }
   }
-  if (best > 25 * dx * dx + 16 * dx * dx) return 0; /* farther than ~6.4 dx from every 4th column */
+  if (best > 25 * dx * dx + 16 * dx * dx)
+    return 0; /* farther than ~6.4 dx from every 4th column */
   const PetscInt lo = PetscMax(cb - 4, 0), hi = PetscMin(cb + 4, nc - 1);
   for (PetscInt c = lo; c <= hi; c++) {
     vein_column_mid(v, w, c, m);
@@ -161,8 +168,10 @@ static int vein_side_of(const vein_metrics *v, const domain *dom, int w, const d
   d[1] = p[1] - mc[1];
   domain_min_image(dom, d);
   const double along = d[0] * t[0] + d[1] * t[1], across = d[0] * t[1] - d[1] * t[0];
-  if (fabs(across) >= 3 * dx) return 0;
-  if ((cb == 0 && along < 0) || (cb == nc - 1 && along > 0) || fabs(along) > dx) return 0;
+  if (fabs(across) >= 3 * dx)
+    return 0;
+  if ((cb == 0 && along < 0) || (cb == nc - 1 && along > 0) || fabs(along) > dx)
+    return 0;
   return across > 0 ? 1 : -1;
 }
 
@@ -171,13 +180,16 @@ static PetscErrorCode vein_check_crossings(vein_metrics *v, sim *s, PetscBool co
   PetscFunctionBeginUser;
   PetscCall(vein_gather_leaflets(v, s));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (ps->type[i] != PTYPE_FLUID)
+      continue;
     PetscInt now = 0;
     for (int w = 0; w < 2 && !now; w++) {
       const int sd = vein_side_of(v, &s->dom, w, ps->x[i]);
-      if (sd) now = (w + 1) * sd;
+      if (sd)
+        now = (w + 1) * sd;
     }
-    if (count && now && ps->side[i] == -now) v->crossings_local++;
+    if (count && now && ps->side[i] == -now)
+      v->crossings_local++;
     ps->side[i] = now;
   }
   PetscFunctionReturn(0);
@@ -190,10 +202,12 @@ static PetscErrorCode vein_station(vein_metrics *v, sim *s, double *u_mean, doub
   PetscInt64 acc[4] = {0, 0, 0, 0}; /* n, sum, n_axis, sum_axis */
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (ps->type[i] != PTYPE_FLUID)
+      continue;
     double d[2] = {ps->x[i][0] - v->lay.x_station, 0};
     domain_min_image(&s->dom, d);
-    if (fabs(d[0]) >= dx) continue;
+    if (fabs(d[0]) >= dx)
+      continue;
     const PetscInt64 q = (PetscInt64)llround(ps->v[i][0] / VEIN_FIXED);
     acc[0]++;
     acc[1] += q;
@@ -219,13 +233,16 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
   } mine = {-1.0, 0}, all;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS) continue;
-    if (ps->stress_mag[i] < mine.value) continue;
+    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS)
+      continue;
+    if (ps->stress_mag[i] < mine.value)
+      continue;
     double best = INFINITY;
     PetscInt kb = -1;
     for (PetscInt k = 0; k < n; k++) {
       double d[2] = {ps->x[i][0] - v->leaf_x[k][0], ps->x[i][1] - v->leaf_x[k][1]};
-      if (fabs(d[1]) > 3 * dx) continue;
+      if (fabs(d[1]) > 3 * dx)
+        continue;
       domain_min_image(&s->dom, d);
       const double r2 = d[0] * d[0] + d[1] * d[1];
       if (r2 < best) {
@@ -233,11 +250,14 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
         kb = k;
       }
     }
-    if (kb < 0 || best >= reach2) continue;
+    if (kb < 0 || best >= reach2)
+      continue;
     const int w = kb >= v->n_leaf[0];
     const PetscInt local = kb - (w ? v->n_leaf[0] : 0);
-    if (local % 2 != v->lay.leaflet[w].sinus_layer || local < 2) continue; /* the sinus face, not the clamp */
-    if (ps->stress_mag[i] > mine.value || (ps->stress_mag[i] == mine.value && ps->gid[i] < mine.gid)) {
+    if (local % 2 != v->lay.leaflet[w].sinus_layer || local < 2)
+      continue; /* the sinus face, not the clamp */
+    if (ps->stress_mag[i] > mine.value ||
+        (ps->stress_mag[i] == mine.value && ps->gid[i] < mine.gid)) {
       mine.value = ps->stress_mag[i];
       mine.gid = (int)ps->gid[i];
     }
@@ -260,8 +280,8 @@ static PetscErrorCode vein_particle_values(sim *s, PetscInt64 gid, double *stres
       buf[2] = 1;
     }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, 3, MPI_DOUBLE, MPI_SUM, s->comm));
-  PetscCheck(buf[2] == 1, s->comm, PETSC_ERR_PLIB, "vein: measurement particle gid %" PetscInt64_FMT " not found",
-             gid);
+  PetscCheck(buf[2] == 1, s->comm, PETSC_ERR_PLIB,
+             "vein: measurement particle gid %" PetscInt64_FMT " not found", gid);
   *stress = buf[0];
   *disp = buf[1];
   PetscFunctionReturn(0);
@@ -272,7 +292,8 @@ static PetscErrorCode vein_liquid_bounds(sim *s, double *rho_dev, double *mach) 
   double buf[2] = {0, 0};
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (ps->type[i] != PTYPE_FLUID)
+      continue;
     buf[0] = PetscMax(buf[0], fabs(ps->rho[i] / s->sph.rho0 - 1.0));
     buf[1] = PetscMax(buf[1], hypot(ps->v[i][0], ps->v[i][1]) / s->sph.c0);
   }
@@ -288,7 +309,8 @@ static PetscErrorCode vein_open(sim *s, const char *name, FILE **f, PetscBool *f
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   *fresh = s->io.restarted ? PETSC_FALSE : PETSC_TRUE;
   *f = fopen(path, *fresh ? "w" : "a");
-  PetscCheck(*f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+  PetscCheck(*f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
+             strerror(errno));
   PetscFunctionReturn(0);
 }
 
@@ -300,7 +322,8 @@ static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(4 * (size_t)ps->n_owned + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS) continue;
+    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS)
+      continue;
     mine[n_mine++] = (double)ps->gid[i];
     mine[n_mine++] = ps->x[i][0];
     mine[n_mine++] = ps->x[i][1];
@@ -321,12 +344,14 @@ static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) 
     if (!v->sinus) {
       PetscBool fresh;
       PetscCall(vein_open(s, "vein-sinus.csv", &v->sinus, &fresh));
-      if (fresh) fprintf(v->sinus, "cycle,t,gid,x,y,displacement\n");
+      if (fresh)
+        fprintf(v->sinus, "cycle,t,gid,x,y,displacement\n");
     }
     int ok = 1;
     for (PetscInt k = 0; k < n && ok; k++) {
       const double *r = all + 4 * order[k];
-      ok = fprintf(v->sinus, "%" PetscInt_FMT ",%.8g,%.0f,%.9g,%.9g,%.6g\n", cycle, s->t, r[0], r[1], r[2], r[3]) > 0;
+      ok = fprintf(v->sinus, "%" PetscInt_FMT ",%.8g,%.0f,%.9g,%.9g,%.6g\n", cycle, s->t, r[0],
+                   r[1], r[2], r[3]) > 0;
     }
     ok = ok && fflush(v->sinus) == 0;
     PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write vein-sinus.csv");
@@ -358,30 +383,37 @@ static PetscErrorCode vein_history_push(vein_metrics *v, double t, double stress
 }
 
 static void vein_csv_real(char *buf, size_t len, PetscBool have, double x) {
-  if (have && isfinite(x)) snprintf(buf, len, "%.8g", x);
-  else buf[0] = 0; /* empty cell, never NaN */
+  if (have && isfinite(x))
+    snprintf(buf, len, "%.8g", x);
+  else
+    buf[0] = 0; /* empty cell, never NaN */
 }
 
 PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
-  const PetscBool output = s->step == 0 || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool output =
+      s->step == 0 || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionBeginUser;
   if (s->step % v->lay.crossing_interval == 0 || output)
     PetscCall(vein_check_crossings(v, s, s->step > 0 ? PETSC_TRUE : PETSC_FALSE));
   /* a restarted run continues with the next output time: its step-0 state was written */
-  if (!output || (s->io.restarted && s->t <= s->io.restart_t + 0.5 * s->dt)) PetscFunctionReturn(0);
+  if (!output || (s->io.restarted && s->t <= s->io.restart_t + 0.5 * s->dt))
+    PetscFunctionReturn(0);
   PetscCall(stress_compute(s));
-  double u_mean = 0, u_centre = 0, peak = 0, probe_stress = 0, probe_disp = 0, rho_dev = 0, mach = 0, tip[2][2];
+  double u_mean = 0, u_centre = 0, peak = 0, probe_stress = 0, probe_disp = 0, rho_dev = 0,
+         mach = 0, tip[2][2];
   PetscInt64 peak_gid = -1;
   PetscCall(vein_station(v, s, &u_mean, &u_centre));
   PetscCall(vein_sinus_peak(v, s, &peak, &peak_gid));
   PetscCall(vein_liquid_bounds(s, &rho_dev, &mach));
   PetscCallMPI(MPI_Allreduce(&v->crossings_local, &v->crossings, 1, MPIU_INT64, MPI_SUM, s->comm));
-  for (int w = 0; w < 2; w++) vein_column_mid(v, w, v->lay.leaflet[w].n_columns - 1, tip[w]);
+  for (int w = 0; w < 2; w++)
+    vein_column_mid(v, w, v->lay.leaflet[w].n_columns - 1, tip[w]);
   double dtip[2] = {tip[0][0] - tip[1][0], tip[0][1] - tip[1][1]};
   domain_min_image(&s->dom, dtip);
   const double gap = hypot(dtip[0], dtip[1]);
   const double T = v->lay.period_T;
-  if (v->probe_gid < 0 && s->t >= v->lay.probe_time - 0.5 * s->dt && peak_gid >= 0) v->probe_gid = peak_gid;
+  if (v->probe_gid < 0 && s->t >= v->lay.probe_time - 0.5 * s->dt && peak_gid >= 0)
+    v->probe_gid = peak_gid;
   if (v->probe_gid >= 0) {
     PetscCall(vein_particle_values(s, v->probe_gid, &probe_stress, &probe_disp));
     PetscCall(vein_history_push(v, s->t, probe_stress, probe_disp));
@@ -406,32 +438,42 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
       PetscCall(vein_open(s, "vein.csv", &v->csv, &fresh));
       if (fresh)
         fprintf(v->csv,
-                "# vein: leaflet %g m, g0 %g m/s^2, k_a %g J (at dx = 1e-4 m), T %g s, dx %g m, rest gap %g m\n"
+                "# vein: leaflet %g m, g0 %g m/s^2, k_a %g J (at dx = 1e-4 m), T %g s, dx %g m, "
+                "rest gap %g m\n"
                 "t,u_mean,u_centre,tip_upper_x,tip_upper_y,tip_lower_x,tip_lower_y,gap,crossings,"
                 "peak_stress,peak_gid,probe_gid,probe_stress,probe_disp,rho_dev,mach\n",
                 v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, v->lay.rest_gap);
     }
     char ps_s[32], pg_s[32], pr_g[32], pr_s[32], pr_d[32];
     vein_csv_real(ps_s, sizeof(ps_s), peak_gid >= 0, peak);
-    if (peak_gid >= 0) snprintf(pg_s, sizeof(pg_s), "%" PetscInt64_FMT, peak_gid);
-    else pg_s[0] = 0;
-    if (v->probe_gid >= 0) snprintf(pr_g, sizeof(pr_g), "%" PetscInt64_FMT, v->probe_gid);
-    else pr_g[0] = 0;
+    if (peak_gid >= 0)
+      snprintf(pg_s, sizeof(pg_s), "%" PetscInt64_FMT, peak_gid);
+    else
+      pg_s[0] = 0;
+    if (v->probe_gid >= 0)
+      snprintf(pr_g, sizeof(pr_g), "%" PetscInt64_FMT, v->probe_gid);
+    else
+      pr_g[0] = 0;
     vein_csv_real(pr_s, sizeof(pr_s), v->probe_gid >= 0, probe_stress);
     vein_csv_real(pr_d, sizeof(pr_d), v->probe_gid >= 0, probe_disp);
-    const int ok = fprintf(v->csv, "%.8g,%.8g,%.8g,%.9g,%.9g,%.9g,%.9g,%.8g,%" PetscInt64_FMT ",%s,%s,%s,%s,%s,%.6g,%.6g\n",
-                           s->t, u_mean, u_centre, tip[0][0], tip[0][1], tip[1][0], tip[1][1], gap, v->crossings,
-                           ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach) > 0;
-    PetscCheck(ok && fflush(v->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write vein.csv");
+    const int ok = fprintf(v->csv,
+                           "%.8g,%.8g,%.8g,%.9g,%.9g,%.9g,%.9g,%.8g,%" PetscInt64_FMT
+                           ",%s,%s,%s,%s,%s,%.6g,%.6g\n",
+                           s->t, u_mean, u_centre, tip[0][0], tip[0][1], tip[1][0], tip[1][1], gap,
+                           v->crossings, ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach) > 0;
+    PetscCheck(ok && fflush(v->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "cannot write vein.csv");
   }
   PetscFunctionReturn(0);
 }
 
 static void vein_mean_std(const double *x, PetscInt n, double *mean, double *std) {
   double m = 0, q = 0;
-  for (PetscInt k = 0; k < n; k++) m += x[k];
+  for (PetscInt k = 0; k < n; k++)
+    m += x[k];
   m = n ? m / n : NAN;
-  for (PetscInt k = 0; k < n; k++) q += (x[k] - m) * (x[k] - m);
+  for (PetscInt k = 0; k < n; k++)
+    q += (x[k] - m) * (x[k] - m);
   *mean = m;
   *std = n > 1 ? sqrt(q / (n - 1)) : (n == 1 ? 0 : NAN);
 }
@@ -454,24 +496,32 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
         rows++;
       }
     /* a completed cycle, entirely after the probe was chosen */
-    if (rows && (c + 1) * T <= s->t + 1e-9 * T && v->n_hist && v->hist_t[0] <= c * T + 0.25 * T + 1e-9 * T)
+    if (rows && (c + 1) * T <= s->t + 1e-9 * T && v->n_hist &&
+        v->hist_t[0] <= c * T + 0.25 * T + 1e-9 * T)
       peaks[n_cycles++] = best;
   }
-  if (n_cycles) vein_mean_std(peaks, n_cycles, &peak_mean, &peak_std);
+  if (n_cycles)
+    vein_mean_std(peaks, n_cycles, &peak_mean, &peak_std);
   PetscCall(PetscFree(peaks));
-  PetscCall(PetscPrintf(s->comm,
-                        "vein: peak inlet velocity (station x = 0) mean %.4g m/s, centreline %.4g m/s over the first "
-                        "cycle (%.4g, %.4g m/s over the run)\n",
-                        v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak));
-  PetscCall(PetscPrintf(s->comm, "vein: gap between the tips %.4g .. %.4g m (rest %.4g m); crossings %" PetscInt64_FMT
-                                 "; max |rho/rho0 - 1| %.3g, max Mach %.3g\n",
-                        v->gap_min, v->gap_max, v->lay.rest_gap, v->crossings, v->rho_dev_max, v->mach_max));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "vein: peak inlet velocity (station x = 0) mean %.4g m/s, centreline %.4g m/s over the first "
+      "cycle (%.4g, %.4g m/s over the run)\n",
+      v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "vein: gap between the tips %.4g .. %.4g m (rest %.4g m); crossings %" PetscInt64_FMT
+      "; max |rho/rho0 - 1| %.3g, max Mach %.3g\n",
+      v->gap_min, v->gap_max, v->lay.rest_gap, v->crossings, v->rho_dev_max, v->mach_max));
   if (v->probe_gid >= 0) {
     char peak_s[64] = "n/a: no whole cycle after the point was chosen";
-    if (n_cycles) PetscCall(PetscSNPrintf(peak_s, sizeof(peak_s), "%.4g +- %.3g Pa", peak_mean, peak_std));
+    if (n_cycles)
+      PetscCall(PetscSNPrintf(peak_s, sizeof(peak_s), "%.4g +- %.3g Pa", peak_mean, peak_std));
     PetscCall(PetscPrintf(s->comm,
-                          "vein: measurement point gid %" PetscInt64_FMT ": displacement %.4g +- %.3g m (time average, "
-                          "%" PetscInt_FMT " rows), peak stress per cycle %s (%" PetscInt_FMT " cycles)\n",
+                          "vein: measurement point gid %" PetscInt64_FMT
+                          ": displacement %.4g +- %.3g m (time average, "
+                          "%" PetscInt_FMT " rows), peak stress per cycle %s (%" PetscInt_FMT
+                          " cycles)\n",
                           v->probe_gid, disp_mean, disp_std, v->n_hist, peak_s, n_cycles));
   }
   if (s->rank == 0) {
@@ -479,28 +529,36 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
     PetscCall(sim_output_path(s, "vein-summary.csv", path, sizeof(path)));
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     FILE *f = fopen(tmp, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp,
+               strerror(errno));
     char a[32], b[32], c[32], d[32];
     vein_csv_real(a, sizeof(a), v->n_hist > 0, disp_mean);
     vein_csv_real(b, sizeof(b), v->n_hist > 0, disp_std);
     vein_csv_real(c, sizeof(c), n_cycles > 0, peak_mean);
     vein_csv_real(d, sizeof(d), n_cycles > 0, peak_std);
     int ok = fprintf(f,
-                     "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%.6g\nnu,%.6g\nt_end,%.8g\n"
-                     "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_centre_peak,%.6g\n"
-                     "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT "\nrho_dev_max,%.6g\n"
-                     "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
+                     "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%."
+                     "6g\nnu,%.6g\nt_end,%.8g\n"
+                     "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_"
+                     "centre_peak,%.6g\n"
+                     "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT
+                     "\nrho_dev_max,%.6g\n"
+                     "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT
+                     "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
                      "peak_stress_std,%s\nn_cycles,%" PetscInt_FMT "\n",
-                     v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, s->sph.nu, s->t, v->u_mean_peak1,
-                     v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak, v->lay.rest_gap, v->gap_min, v->gap_max,
-                     v->crossings, v->rho_dev_max, v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
+                     v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, s->sph.nu, s->t,
+                     v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
+                     v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings, v->rho_dev_max,
+                     v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
     ok = (fclose(f) == 0) && ok;
     PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
-    PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
-               path, strerror(errno));
+    PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "cannot rename %s to %s: %s", tmp, path, strerror(errno));
   }
-  if (v->csv) fclose(v->csv);
-  if (v->sinus) fclose(v->sinus);
+  if (v->csv)
+    fclose(v->csv);
+  if (v->sinus)
+    fclose(v->sinus);
   v->csv = v->sinus = NULL;
   PetscFunctionReturn(0);
 }
@@ -508,7 +566,7 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
 PetscErrorCode vein_metrics_checkpoint_write(vein_metrics *v, checkpoint_io *io) {
   const PetscInt64 ints[4] = {v->crossings, v->probe_gid, v->next_cycle, v->n_hist};
   const double reals[8] = {v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
-                           v->gap_min,      v->gap_max,       v->rho_dev_max, v->mach_max};
+                           v->gap_min,      v->gap_max,        v->rho_dev_max, v->mach_max};
   PetscFunctionBeginUser;
   PetscCall(checkpoint_put_ints(io, "vein_ints", ints, 4));
   PetscCall(checkpoint_put_reals(io, "vein_reals", reals, 8));

@@ -17,7 +17,8 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
   particles *ps = &s->ps;
   const sph_params *sp = &s->sph;
   const PetscInt n = ps->n_owned + ps->n_ghost;
-  const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h, norm = sph_kernel_norm(sp->kernel, 2, sp->h);
+  const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h,
+               norm = sph_kernel_norm(sp->kernel, 2, sp->h);
   const double mu_sum = 2.0 * sp->rho0 * sp->nu;
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   double(*fp)[2], (*L)[4];
@@ -27,13 +28,15 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
     const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
     const double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
-    if (r2 >= h2) continue;
+    if (r2 >= h2)
+      continue;
     const double r = sqrt(r2);
     double w = 0, dwdr = 0;
     sph_kernel_eval(sp->kernel, 2, norm, inv_h, r, &w, &dwdr);
     const double inv_ri = 1.0 / ps->rho[i], inv_rj = 1.0 / ps->rho[j];
     const double Pi = ps->p[i] * inv_ri * inv_ri, Pj = ps->p[j] * inv_rj * inv_rj;
-    const double vvisc[2] = {ps->v_visc[i][0] - ps->v_visc[j][0], ps->v_visc[i][1] - ps->v_visc[j][1]};
+    const double vvisc[2] = {ps->v_visc[i][0] - ps->v_visc[j][0],
+                             ps->v_visc[i][1] - ps->v_visc[j][1]};
     double T[2], Tp[2];
     sph_force_iact(rij, r, dwdr, Pi, Pj, inv_ri, inv_rj, vvisc, mu_sum, T);
     if (artificial) {
@@ -44,7 +47,8 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
     const double zero[2] = {0, 0};
     sph_force_iact(rij, r, dwdr, Pi, Pj, inv_ri, inv_rj, zero, 0.0, Tp); /* pressure part only */
     const double mm = ps->mass[i] * ps->mass[j];
-    const double wv[3] = {-0.5 * mm * rij[0] * T[0], -0.5 * mm * rij[0] * T[1], -0.5 * mm * rij[1] * T[1]};
+    const double wv[3] = {-0.5 * mm * rij[0] * T[0], -0.5 * mm * rij[0] * T[1],
+                          -0.5 * mm * rij[1] * T[1]};
     for (int c = 0; c < 3; c++) {
       W[i][c] += wv[c];
       W[j][c] += wv[c];
@@ -63,7 +67,8 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
       }
   }
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->pressure_force) ps->pressure_force[i] = hypot(fp[i][0], fp[i][1]);
+    if (ps->pressure_force)
+      ps->pressure_force[i] = hypot(fp[i][0], fp[i][1]);
     if (ps->shear_rate) {
       const double dxx = L[i][0], dyy = L[i][3], dxy = 0.5 * (L[i][1] + L[i][2]);
       ps->shear_rate[i] = sqrt(2.0 * (dxx * dxx + dyy * dyy + 2.0 * dxy * dxy));

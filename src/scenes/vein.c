@@ -63,56 +63,67 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   vein_data *v = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene vein (deep-vein valve with two flexible leaflets)", NULL);
-  PetscCall(PetscOptionsReal("-vein_dx", "Particle spacing dx [m] (lengths and masses scale from dx = 1e-4 m)",
+  PetscCall(PetscOptionsReal("-vein_dx",
+                             "Particle spacing dx [m] (lengths and masses scale from dx = 1e-4 m)",
                              NULL, v->dx, &v->dx, NULL));
-  PetscCall(PetscOptionsReal("-vein_width", "Channel width W [m]", NULL, v->width, &v->width, NULL));
-  PetscCall(PetscOptionsReal("-vein_sinus_diameter", "Sinus (valve chamber) diameter D [m]", NULL, v->diameter,
-                             &v->diameter, NULL));
-  PetscCall(PetscOptionsReal("-vein_sinus_length", "Sinus length along x [m]", NULL, v->sinus_length,
-                             &v->sinus_length, NULL));
-  PetscCall(PetscOptionsReal("-vein_length", "Periodic length of the channel [m]", NULL, v->length, &v->length,
-                             NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_length", "Leaflet length L [m] (0.0256, 0.0175, 0.01 in the study)",
-                             NULL, v->leaflet_length, &v->leaflet_length, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_gap", "Rest distance between the two leaflet tips [m]", NULL,
-                             v->leaflet_gap, &v->leaflet_gap, NULL));
+  PetscCall(
+      PetscOptionsReal("-vein_width", "Channel width W [m]", NULL, v->width, &v->width, NULL));
+  PetscCall(PetscOptionsReal("-vein_sinus_diameter", "Sinus (valve chamber) diameter D [m]", NULL,
+                             v->diameter, &v->diameter, NULL));
+  PetscCall(PetscOptionsReal("-vein_sinus_length", "Sinus length along x [m]", NULL,
+                             v->sinus_length, &v->sinus_length, NULL));
+  PetscCall(PetscOptionsReal("-vein_length", "Periodic length of the channel [m]", NULL, v->length,
+                             &v->length, NULL));
+  PetscCall(PetscOptionsReal("-vein_leaflet_length",
+                             "Leaflet length L [m] (0.0256, 0.0175, 0.01 in the study)", NULL,
+                             v->leaflet_length, &v->leaflet_length, NULL));
+  PetscCall(PetscOptionsReal("-vein_leaflet_gap", "Rest distance between the two leaflet tips [m]",
+                             NULL, v->leaflet_gap, &v->leaflet_gap, NULL));
   PetscCall(PetscOptionsReal("-vein_leaflet_angle",
-                             "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)", NULL,
-                             v->leaflet_angle_deg, &v->leaflet_angle_deg, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_ka",
-                             "Leaflet angle stiffness k_a at dx = 1e-4 m [J] (scaled by 1e-4/dx; -angle_k sets it "
-                             "directly)",
-                             NULL, v->ka_ref, &v->ka_ref, NULL));
-  PetscCall(PetscOptionsReal("-vein_fluid_mass", "Fluid particle mass at dx = 1e-4 m [kg] (scaled by dx^2)", NULL,
+                             "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)",
+                             NULL, v->leaflet_angle_deg, &v->leaflet_angle_deg, NULL));
+  PetscCall(PetscOptionsReal(
+      "-vein_leaflet_ka",
+      "Leaflet angle stiffness k_a at dx = 1e-4 m [J] (scaled by 1e-4/dx; -angle_k sets it "
+      "directly)",
+      NULL, v->ka_ref, &v->ka_ref, NULL));
+  PetscCall(PetscOptionsReal("-vein_fluid_mass",
+                             "Fluid particle mass at dx = 1e-4 m [kg] (scaled by dx^2)", NULL,
                              v->fluid_mass_ref, &v->fluid_mass_ref, NULL));
   PetscCall(PetscOptionsReal("-vein_solid_mass",
-                             "Wall and leaflet particle mass at dx = 1e-4 m [kg] (scaled by dx^2)", NULL,
-                             v->solid_mass_ref, &v->solid_mass_ref, NULL));
+                             "Wall and leaflet particle mass at dx = 1e-4 m [kg] (scaled by dx^2)",
+                             NULL, v->solid_mass_ref, &v->solid_mass_ref, NULL));
   PetscCall(PetscOptionsInt("-vein_wall_layers", "Wall particle layers [1]", NULL, v->wall_layers,
                             &v->wall_layers, NULL));
-  PetscCall(PetscOptionsInt("-vein_crossing_interval", "Steps between checks that no liquid crosses a leaflet [1]",
-                            NULL, v->crossing_interval, &v->crossing_interval, NULL));
-  PetscCall(PetscOptionsReal("-vein_probe_time",
-                             "Time at which the measurement point (peak stress, sinus side) is chosen [s] "
-                             "(0 = a quarter period, the forward peak)",
-                             NULL, v->probe_time, &v->probe_time, NULL));
+  PetscCall(PetscOptionsInt("-vein_crossing_interval",
+                            "Steps between checks that no liquid crosses a leaflet [1]", NULL,
+                            v->crossing_interval, &v->crossing_interval, NULL));
+  PetscCall(PetscOptionsReal(
+      "-vein_probe_time",
+      "Time at which the measurement point (peak stress, sinus side) is chosen [s] "
+      "(0 = a quarter period, the forward peak)",
+      NULL, v->probe_time, &v->probe_time, NULL));
   PetscOptionsEnd();
   PetscCheck(v->dx > 0 && v->width > 10 * v->dx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_dx must be > 0 and -vein_width > 10 dx (got dx = %g m, W = %g m)", v->dx, v->width);
+             "-vein_dx must be > 0 and -vein_width > 10 dx (got dx = %g m, W = %g m)", v->dx,
+             v->width);
   PetscCheck(v->diameter >= v->width, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-vein_sinus_diameter (%g m) must be >= -vein_width (%g m)", v->diameter, v->width);
-  PetscCheck(v->sinus_length > 4 * v->dx && v->length > v->sinus_length + 10 * v->dx, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_length (%g m) must exceed -vein_sinus_length (%g m) by 10 dx, and the sinus 4 dx", v->length,
-             v->sinus_length);
+  PetscCheck(
+      v->sinus_length > 4 * v->dx && v->length > v->sinus_length + 10 * v->dx, s->comm,
+      PETSC_ERR_ARG_OUTOFRANGE,
+      "-vein_length (%g m) must exceed -vein_sinus_length (%g m) by 10 dx, and the sinus 4 dx",
+      v->length, v->sinus_length);
   PetscCheck(v->leaflet_length >= 3 * v->dx && v->leaflet_length < v->sinus_length, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE, "-vein_leaflet_length must lie in [3 dx, sinus length) (got %g m)",
-             v->leaflet_length);
+             PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_leaflet_length must lie in [3 dx, sinus length) (got %g m)", v->leaflet_length);
   PetscCheck(v->leaflet_gap >= 0 && v->leaflet_gap < v->width, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-vein_leaflet_gap must lie in [0, W) (got %g m)", v->leaflet_gap);
-  PetscCheck(v->leaflet_angle_deg >= 0 && v->leaflet_angle_deg < 90, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_leaflet_angle must lie in [0, 90) deg (got %g)", v->leaflet_angle_deg);
-  PetscCheck(v->ka_ref >= 0 && v->fluid_mass_ref > 0 && v->solid_mass_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(v->leaflet_angle_deg >= 0 && v->leaflet_angle_deg < 90, s->comm,
+             PETSC_ERR_ARG_OUTOFRANGE, "-vein_leaflet_angle must lie in [0, 90) deg (got %g)",
+             v->leaflet_angle_deg);
+  PetscCheck(v->ka_ref >= 0 && v->fluid_mass_ref > 0 && v->solid_mass_ref > 0, s->comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
              "-vein_leaflet_ka must be >= 0, -vein_fluid_mass and -vein_solid_mass > 0");
   PetscCheck(v->wall_layers >= 1 && v->crossing_interval >= 1 && v->probe_time >= 0, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
@@ -187,12 +198,14 @@ static PetscErrorCode vein_surface_build(const vein_data *v, double xc, vein_sur
     sf->p[sf->n][0] = x;
     sf->p[sf->n++][1] = 0.5 * v->width;
   }
-  PetscCheck(sf->n <= n_line + n_arc + 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vein: surface samples overflow");
+  PetscCheck(sf->n <= n_line + n_arc + 4, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "vein: surface samples overflow");
   PetscFunctionReturn(0);
 }
 
 /* Distance from (x, |y|) to the upper surface (periodic in x), within 4 dx + layers. */
-static double vein_surface_distance(const vein_data *v, const vein_surface *sf, double x, double y, double reach) {
+static double vein_surface_distance(const vein_data *v, const vein_surface *sf, double x, double y,
+                                    double reach) {
   double best = INFINITY;
   for (int image = -1; image <= 1; image++) {
     const double xs = x + image * v->length;
@@ -200,8 +213,10 @@ static double vein_surface_distance(const vein_data *v, const vein_surface *sf, 
     PetscInt lo = 0, hi = sf->n;
     while (lo < hi) {
       const PetscInt mid = (lo + hi) / 2;
-      if (sf->p[mid][0] < xs - reach) lo = mid + 1;
-      else hi = mid;
+      if (sf->p[mid][0] < xs - reach)
+        lo = mid + 1;
+      else
+        hi = mid;
     }
     for (PetscInt k = lo; k < sf->n && sf->p[k][0] <= xs + reach; k++)
       best = PetscMin(best, hypot(sf->p[k][0] - xs, sf->p[k][1] - y));
@@ -210,8 +225,8 @@ static double vein_surface_distance(const vein_data *v, const vein_surface *sf, 
 }
 
 /* Leaflet strips: upper (sign +1) and lower (-1), mirror images. */
-static void vein_leaflet_strip(const vein_data *v, double x_root, double theta, int sign, double mass,
-                               double rho, solid_strip *st) {
+static void vein_leaflet_strip(const vein_data *v, double x_root, double theta, int sign,
+                               double mass, double rho, solid_strip *st) {
   const double c = cos(theta), sn = sin(theta);
   st->n = 1 + (PetscInt)floor(v->leaflet_length / v->dx + 0.5);
   st->n_clamp = 1;
@@ -230,16 +245,24 @@ static void vein_leaflet_strip(const vein_data *v, double x_root, double theta, 
 static PetscBool vein_near_strips(const solid_strip st[2], double x, double y, double dmin) {
   for (int k = 0; k < 2; k++) {
     /* bounding box of the strip, widened by dmin */
-    const double ex = st[k].spacing * (st[k].n * fabs(st[k].along[0]) + fabs(st[k].across[0])) + dmin;
-    const double ey = st[k].spacing * (st[k].n * fabs(st[k].along[1]) + fabs(st[k].across[1])) + dmin;
-    const double cx = st[k].origin[0] + 0.5 * st[k].spacing * (st[k].n * st[k].along[0] + st[k].across[0]);
-    const double cy = st[k].origin[1] + 0.5 * st[k].spacing * (st[k].n * st[k].along[1] + st[k].across[1]);
-    if (fabs(x - cx) > 0.5 * ex + dmin || fabs(y - cy) > 0.5 * ey + dmin) continue;
+    const double ex =
+        st[k].spacing * (st[k].n * fabs(st[k].along[0]) + fabs(st[k].across[0])) + dmin;
+    const double ey =
+        st[k].spacing * (st[k].n * fabs(st[k].along[1]) + fabs(st[k].across[1])) + dmin;
+    const double cx =
+        st[k].origin[0] + 0.5 * st[k].spacing * (st[k].n * st[k].along[0] + st[k].across[0]);
+    const double cy =
+        st[k].origin[1] + 0.5 * st[k].spacing * (st[k].n * st[k].along[1] + st[k].across[1]);
+    if (fabs(x - cx) > 0.5 * ex + dmin || fabs(y - cy) > 0.5 * ey + dmin)
+      continue;
     for (PetscInt c = 0; c < st[k].n; c++)
       for (int l = 0; l < 2; l++) {
-        const double px = st[k].origin[0] + st[k].spacing * (c * st[k].along[0] + l * st[k].across[0]);
-        const double py = st[k].origin[1] + st[k].spacing * (c * st[k].along[1] + l * st[k].across[1]);
-        if (fabs(px - x) < dmin && fabs(py - y) < dmin && hypot(px - x, py - y) < dmin) return PETSC_TRUE;
+        const double px =
+            st[k].origin[0] + st[k].spacing * (c * st[k].along[0] + l * st[k].across[0]);
+        const double py =
+            st[k].origin[1] + st[k].spacing * (c * st[k].along[1] + l * st[k].across[1]);
+        if (fabs(px - x) < dmin && fabs(py - y) < dmin && hypot(px - x, py - y) < dmin)
+          return PETSC_TRUE;
       }
   }
   return PETSC_FALSE;
@@ -266,7 +289,8 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
   if (v->leaflet_angle_deg == 0) {
     const double sn = (0.5 * v->width - 0.5 * v->leaflet_gap) / (n_free * dx);
     PetscCheck(sn > 0 && sn < 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "vein: a leaflet of %g m cannot leave a gap of %g m in a channel of %g m (set -vein_leaflet_angle)",
+               "vein: a leaflet of %g m cannot leave a gap of %g m in a channel of %g m (set "
+               "-vein_leaflet_angle)",
                v->leaflet_length, v->leaflet_gap, v->width);
     theta = asin(sn);
   }
@@ -289,21 +313,27 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
         const double x[2] = {(i + 0.5) * dx, (j + 0.5) * dx}, ay = fabs(x[1]);
         const double Y = vein_surface_y(v, xc, x[0]);
         const PetscBool inside = ay < Y ? PETSC_TRUE : PETSC_FALSE;
-        if (pass == 0 && !inside) continue;
-        if (pass == 1 && (inside || ay > Y + reach)) continue;
+        if (pass == 0 && !inside)
+          continue;
+        if (pass == 1 && (inside || ay > Y + reach))
+          continue;
         /* far inside: no need to measure (the surface's slope is finite there) */
         const double d = inside && Y - ay > 2 * dx && fabs(fabs(x[0] - xc) - A) > 2 * dx
                              ? INFINITY
                              : vein_surface_distance(v, &sf, x[0], ay, reach);
-        if (pass == 0 && d < 0.5 * dx - 1e-9 * dx) continue;
-        if (pass == 1 && (d < 0.45 * dx || d >= (v->wall_layers + 0.45) * dx)) continue;
-        if (vein_near_strips(st, x[0], x[1], dx * (1 - 1e-9))) continue;
+        if (pass == 0 && d < 0.5 * dx - 1e-9 * dx)
+          continue;
+        if (pass == 1 && (d < 0.45 * dx || d >= (v->wall_layers + 0.45) * dx))
+          continue;
+        if (vein_near_strips(st, x[0], x[1], dx * (1 - 1e-9)))
+          continue;
         PetscInt idx;
         PetscCall(particles_add_owned(&s->ps, gid++, pass == 0 ? PTYPE_FLUID : PTYPE_WALL, x, zero,
                                       pass == 0 ? m_fluid : m_solid, s->sph.rho0, &idx));
         if (pass == 0 && x[0] > x_root && x[0] < xc + A) {
           /* between a leaflet's mid-plane (or the channel line past the tip) and the sinus wall */
-          const double y_leaf = x[0] < x_tip ? 0.5 * v->width - (x[0] - x_root) * tan(theta) : 0.5 * v->width;
+          const double y_leaf =
+              x[0] < x_tip ? 0.5 * v->width - (x[0] - x_root) * tan(theta) : 0.5 * v->width;
           if (ay > y_leaf) {
             s->ps.tag[idx] = VEIN_TAG_SINUS;
             n_sinus++;
@@ -318,25 +348,30 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
     PetscCall(solid_strip_build(s, &st[k], &gid));
     for (PetscInt i = first; i < s->ps.n_owned; i++) {
       s->ps.body[i] = k + 1;
-      if (s->ps.tag[i] == SOLID_LOAD_TAG) s->ps.tag[i] = 0; /* no point load here */
+      if (s->ps.tag[i] == SOLID_LOAD_TAG)
+        s->ps.tag[i] = 0; /* no point load here */
     }
     v->lay.leaflet[k].first_gid = st[k].first_gid;
     v->lay.leaflet[k].n_columns = st[k].n;
     v->lay.leaflet[k].sinus_layer = 0;
   }
   const PetscInt64 n_leaflet = 4 * n_free;
+  PetscCall(
+      PetscPrintf(s->comm,
+                  "vein: period %g m, sinus %g m long at x = [%g, %g] m (half-ellipses, D = %g m), "
+                  "W = %g m, dx = %g m\n",
+                  v->length, v->sinus_length, x_root, xc + A, v->diameter, v->width, dx));
   PetscCall(PetscPrintf(s->comm,
-                        "vein: period %g m, sinus %g m long at x = [%g, %g] m (half-ellipses, D = %g m), "
-                        "W = %g m, dx = %g m\n",
-                        v->length, v->sinus_length, x_root, xc + A, v->diameter, v->width, dx));
-  PetscCall(PetscPrintf(s->comm,
-                        "vein: particles fluid %" PetscInt64_FMT " (%" PetscInt64_FMT " in the sinus), wall %" PetscInt64_FMT
-                        " (%" PetscInt_FMT " layers, 4 of them leaflet clamps), leaflet %" PetscInt64_FMT
+                        "vein: particles fluid %" PetscInt64_FMT " (%" PetscInt64_FMT
+                        " in the sinus), wall %" PetscInt64_FMT " (%" PetscInt_FMT
+                        " layers, 4 of them leaflet clamps), leaflet %" PetscInt64_FMT
                         " (2 x 2 x %" PetscInt_FMT ")\n",
                         n_fluid, n_sinus, n_wall + 4, v->wall_layers, n_leaflet, n_free));
   PetscCall(PetscPrintf(s->comm,
-                        "vein: leaflets of %g m at %.3f deg to the axis, rooted at x = %g m; tips %g m apart at rest\n",
-                        n_free * dx, theta * 180.0 / M_PI, x_root, 2 * (0.5 * v->width - n_free * dx * sin(theta))));
+                        "vein: leaflets of %g m at %.3f deg to the axis, rooted at x = %g m; tips "
+                        "%g m apart at rest\n",
+                        n_free * dx, theta * 180.0 / M_PI, x_root,
+                        2 * (0.5 * v->width - n_free * dx * sin(theta))));
 
   /* the diagnostics object, with what they need of the geometry */
   PetscCall(body_force_get(v->body, F, &T));
