@@ -68,10 +68,18 @@ add_test(NAME validation_vein_plot_study
 set_tests_properties(validation_vein_plot_study PROPERTIES LABELS validation TIMEOUT 120
                      FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
 
+# inlet velocities of several runs against time (here the two quick runs)
+add_test(NAME validation_vein_plot_inlet
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_inlet.py ${DMHS_VEIN_OUT}/quick
+                 ${DMHS_VEIN_OUT}/quick-2ranks --out ${DMHS_VEIN_PLOTS}/vein_inlet.png)
+set_tests_properties(validation_vein_plot_inlet PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
+
 add_test(NAME validation_vein_plots_check
          COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_LIST_FILE}
                  ${DMHS_VEIN_PLOTS}/vein_fields.png ${DMHS_VEIN_PLOTS}/vein_sinus.png
                  ${DMHS_VEIN_PLOTS}/vein_probe.png ${DMHS_VEIN_PLOTS}/vein_geometry.png
-                 ${DMHS_VEIN_PLOTS}/vein_study_ka.png ${DMHS_VEIN_PLOTS}/vein_study_velocity.png)
+                 ${DMHS_VEIN_PLOTS}/vein_study_ka.png ${DMHS_VEIN_PLOTS}/vein_study_velocity.png
+                 ${DMHS_VEIN_PLOTS}/vein_inlet.png)
 set_tests_properties(validation_vein_plots_check PROPERTIES LABELS validation TIMEOUT 30
                      FIXTURES_REQUIRED vein_plots)
