@@ -1,0 +1,92 @@
+/* Diagnostic CSV files of the scenes: open for a fresh or a restarted run
+ * (see csv.h). The rewrite on restart goes through <name>.tmp and a rename,
+ * so an interrupted rewrite never leaves half a file. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "dmhs/sim.h"
+#include "dmhs/csv.h"
+
+/* Is this line a data row with t (its first field) after t_keep? Header and
+ * comment lines (no number first) are kept. */
+static int csv_row_after(const char *line, double t_keep) {
+  char *end;
+  const double t = strtod(line, &end);
+  if (end == line || (*end != ',' && *end != '\n' && *end != 0))
+    return 0;
+  return t > t_keep;
+}
+
+/* Keeps the header and the rows up to t_keep of path; returns 0 or an errno. */
+static int csv_truncate(const char *path, const char *tmp, double t_keep, int *found) {
+  char line[4096];
+  FILE *in = fopen(path, "r");
+  *found = in != NULL;
+  if (!in)
+    return errno == ENOENT ? 0 : errno;
+  FILE *out = fopen(tmp, "w");
+  if (!out) {
+    const int err = errno;
+    fclose(in);
+    return err;
+  }
+  int ok = 1, at_line_start = 1, drop = 0;
+  while (ok && fgets(line, sizeof(line), in)) {
+    /* a line longer than the buffer arrives in pieces: decide on its first */
+    if (at_line_start)
+      drop = csv_row_after(line, t_keep);
+    at_line_start = strchr(line, '\n') != NULL;
+    if (!drop)
+      ok = fputs(line, out) >= 0;
+  }
+  ok = ok && !ferror(in);
+  fclose(in);
+  ok = fclose(out) == 0 && ok;
+  if (!ok) {
+    unlink(tmp);
+    return EIO;
+  }
+  return rename(tmp, path) ? errno : 0;
+}
+
+PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out) {
+  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  int found = 0;
+  PetscFunctionBeginUser;
+  *out = NULL;
+  if (s->rank)
+    PetscFunctionReturn(0);
+  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  if (s->io.restarted) {
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+    const int err = csv_truncate(path, tmp, s->t + 0.5 * s->dt, &found);
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "cannot continue %s after the restart (keeping its rows up to t = %g s): %s", path,
+               s->t, strerror(err));
+  }
+  *out = fopen(path, found ? "a" : "w");
+  PetscCheck(*out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
+             strerror(errno));
+  if (!found)
+    PetscCall(csv_row_done(*out, path, fputs(header, *out) >= 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode csv_row_done(FILE *f, const char *name, int ok) {
+  PetscFunctionBeginUser;
+  PetscCheck(ok && fflush(f) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "writing %s failed: %s (disk full?)", name, strerror(errno ? errno : EIO));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode csv_close(FILE **f, const char *name) {
+  PetscFunctionBeginUser;
+  if (*f) {
+    const int failed = fclose(*f);
+    *f = NULL;
+    PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing %s failed: %s (disk full?)",
+               name, strerror(errno));
+  }
+  PetscFunctionReturn(0);
+}

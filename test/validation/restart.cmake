@@ -1,0 +1,25 @@
+# Restart equivalence scene by scene (issue 14): test/io/restart_scene.sh runs
+# a scene to t_end in one go and to t_end/2 + -restart, possibly on other rank
+# counts, and compares every output file (snapshots and checkpoint by gid,
+# bitwise; XDMF; every CSV but its wall-clock columns). Labels io, mpi.
+set(DMHS_RESTART_OUT ${CMAKE_BINARY_DIR}/test-output/restart)
+set(DMHS_RESTART_SCENE bash ${CMAKE_CURRENT_LIST_DIR}/../io/restart_scene.sh ${DMHS_EXE} ${DMHS_PYTHON}
+    ${DMHS_MPIRUN} --)
+
+# name; ranks of the uninterrupted run, of the first half, of the restarted half; t_end; options...
+function(dmhs_restart_test name np_ref np_first np_second t_end)
+  add_test(NAME ${name} COMMAND ${DMHS_RESTART_SCENE} ${DMHS_RESTART_OUT}/${name} ${np_ref} ${np_first}
+           ${np_second} ${t_end} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "io;mpi" PROCESSORS 2 TIMEOUT 180)
+endfunction()
+
+# The flap on every pairing of 1 and 2 ranks, checkpoint between two output
+# times (flap.csv continued, crossing counter restored, flap-particles.csv in
+# gid order).
+foreach(np "1;1;1" "2;2;2" "1;1;2" "2;2;1")
+  list(GET np 0 ref)
+  list(GET np 1 first)
+  list(GET np 2 second)
+  dmhs_restart_test(io_restart_flap_np${first}to${second} ${ref} ${first} ${second} 0.01
+                    -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts)
+endforeach()
