@@ -60,10 +60,10 @@ PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   if (s->io.restarted) {
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-    const int err = csv_truncate(path, tmp, s->t + 0.5 * s->dt, &found);
+    const int err = csv_truncate(path, tmp, s->io.restart_t + 0.5 * s->dt, &found);
     PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "cannot continue %s after the restart (keeping its rows up to t = %g s): %s", path,
-               s->t, strerror(err));
+               s->io.restart_t, strerror(err));
   }
   *out = fopen(path, found ? "a" : "w");
   PetscCheck(*out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,

@@ -7,8 +7,13 @@ set(DMHS_RESTART_SCENE bash ${CMAKE_CURRENT_LIST_DIR}/../io/restart_scene.sh ${D
     ${DMHS_MPIRUN} --)
 
 # name; ranks of the uninterrupted run, of the first half, of the restarted half; t_end; options...
+# A name ending in _past runs restart_scene.sh --past.
 function(dmhs_restart_test name np_ref np_first np_second t_end)
-  add_test(NAME ${name} COMMAND ${DMHS_RESTART_SCENE} ${DMHS_RESTART_OUT}/${name} ${np_ref} ${np_first}
+  set(mode)
+  if(name MATCHES "_past$")
+    set(mode --past)
+  endif()
+  add_test(NAME ${name} COMMAND ${DMHS_RESTART_SCENE} ${mode} ${DMHS_RESTART_OUT}/${name} ${np_ref} ${np_first}
            ${np_second} ${t_end} ${ARGN})
   set_tests_properties(${name} PROPERTIES LABELS "io;mpi" PROCESSORS 2 TIMEOUT 180)
 endfunction()
@@ -28,3 +33,14 @@ endforeach()
 # default output interval is t_end/100, so it is fixed here for both halves.
 dmhs_restart_test(io_restart_cantilever 2 2 1 0.002 -options_file ${PROJECT_SOURCE_DIR}/input/cantilever.opts
                   -output_interval 1e-4)
+
+# Every quick input (new scenes' inputs/*-quick.opts are picked up when CMake
+# configures): 2 ranks to t = 0.02 s against 2 ranks to 0.01 s + restart on 1.
+file(GLOB DMHS_QUICK_INPUTS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/input/*-quick.opts)
+foreach(opts ${DMHS_QUICK_INPUTS})
+  get_filename_component(case ${opts} NAME_WE)
+  string(REPLACE "-" "_" case ${case})
+  dmhs_restart_test(io_restart_${case} 2 2 1 0.02 -options_file ${opts})
+  # the first run goes on past its checkpoint (killed later): its rows and snapshots are replaced
+  dmhs_restart_test(io_restart_${case}_past 2 2 1 0.02 -options_file ${opts})
+endforeach()
