@@ -16,9 +16,14 @@ struct sim;
 /* Rank 0: opens <output_dir>/<name> as above; header (one or more lines, each
  * ending in '\n') is written only when the file is started. Other ranks get NULL. */
 PetscErrorCode csv_open(struct sim *s, const char *name, const char *header, FILE **out);
-/* Rank 0: flushes a row written with fprintf; a failed write (ok = 0) or flush
- * is an error naming the file (disk full). */
-PetscErrorCode csv_row_done(FILE *f, const char *name, int ok);
+/* Rank 0: writes one row (printf format, ending in '\n') and flushes it. A
+ * non-finite value in the row (nan, inf) is refused, naming the file, the
+ * column and the row, before anything is written; a failed write or flush is
+ * an error naming the file (disk full). */
+PetscErrorCode csv_row(FILE *f, const char *name, const char *format, ...)
+    PETSC_ATTRIBUTE_FORMAT(3, 4);
+/* The same for a row already formatted. */
+PetscErrorCode csv_line(FILE *f, const char *name, const char *line);
 /* Closes (NULL is a no-op); a failed close is an error naming the file. */
 PetscErrorCode csv_close(FILE **f, const char *name);
 

@@ -18,6 +18,7 @@
 #include "dmhs/events.h"
 #include "h5check.h"
 #include "h5io.h"
+#include "guard.h"
 
 struct checkpoint_io {
   MPI_Comm comm;
@@ -98,6 +99,7 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   PetscCall(PetscLogEventBegin(events.checkpoint, 0, 0, 0, 0));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
+  PetscCall(io_guard_finite(s, FIELD_CHECKPOINT, path));
   PetscCall(h5io_create(s->comm, tmp, &fid));
   {
     const PetscInt64 version = CHECKPOINT_FORMAT_VERSION, ranks = s->size, step = s->step,

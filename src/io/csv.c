@@ -2,6 +2,8 @@
  * (see csv.h). The rewrite on restart goes through <name>.tmp and a rename,
  * so an interrupted rewrite never leaves half a file. */
 #include <errno.h>
+#include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -69,14 +71,55 @@ PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out
   PetscCheck(*out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
              strerror(errno));
   if (!found)
-    PetscCall(csv_row_done(*out, path, fputs(header, *out) >= 0));
+    PetscCall(csv_line(*out, path, header));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode csv_row_done(FILE *f, const char *name, int ok) {
+/* 0, or the 1-based column of the first field that reads as a non-finite number */
+static int csv_nonfinite_column(const char *line) {
+  int column = 1;
+  for (const char *c = line; *c; column++) {
+    char *end;
+    const double v = strtod(c, &end);
+    if (end != c && (*end == ',' || *end == '\n' || *end == 0) && !isfinite(v))
+      return column;
+    while (*c && *c != ',')
+      c++;
+    if (*c == ',')
+      c++;
+  }
+  return 0;
+}
+
+PetscErrorCode csv_line(FILE *f, const char *name, const char *line) {
+  const int column = csv_nonfinite_column(line);
   PetscFunctionBeginUser;
-  PetscCheck(ok && fflush(f) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+  PetscCheck(!column, PETSC_COMM_SELF, PETSC_ERR_FP,
+             "refusing to write a non-finite value to %s: column %d of the row %.200s", name,
+             column, line);
+  PetscCheck(fputs(line, f) >= 0 && fflush(f) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
              "writing %s failed: %s (disk full?)", name, strerror(errno ? errno : EIO));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode csv_row(FILE *f, const char *name, const char *format, ...) {
+  char small[1024], *line = small;
+  va_list ap;
+  PetscFunctionBeginUser;
+  va_start(ap, format);
+  const int n = vsnprintf(small, sizeof(small), format, ap);
+  va_end(ap);
+  PetscCheck(n >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cannot format a row of %s", name);
+  if ((size_t)n >= sizeof(small)) {
+    PetscCall(PetscMalloc1((size_t)n + 1, &line));
+    va_start(ap, format);
+    vsnprintf(line, (size_t)n + 1, format, ap);
+    va_end(ap);
+  }
+  PetscErrorCode err = csv_line(f, name, line);
+  if (line != small)
+    PetscCall(PetscFree(line));
+  PetscCall(err);
   PetscFunctionReturn(0);
 }
 

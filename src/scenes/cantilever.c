@@ -162,11 +162,9 @@ static PetscErrorCode cantilever_diagnose(scene *self, sim *s) {
   if (!c->csv) PetscCall(cantilever_open_csv(c, s));
   PetscCall(cantilever_tip(s, d));
   PetscCall(cantilever_energies(s, &kin, &pot));
-  if (c->csv) {
-    const int ok =
-        fprintf(c->csv, "%.10g,%.10g,%.10g,%.10g,%.10g\n", s->t, d[0], d[1], kin, pot) > 0;
-    PetscCall(csv_row_done(c->csv, "cantilever.csv", ok));
-  }
+  if (c->csv)
+    PetscCall(csv_row(c->csv, "cantilever.csv", "%.10g,%.10g,%.10g,%.10g,%.10g\n", s->t, d[0], d[1],
+                      kin, pot));
   PetscFunctionReturn(0);
 }
 

@@ -327,9 +327,8 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
     char slip_s[32] = "", near_s[32] = "";
     if (isfinite(slip)) snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
     if (isfinite(near)) snprintf(near_s, sizeof(near_s), "%.6g", near);
-    const int ok = fprintf(f->csv, "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t, tip[0],
-                           tip[1], f->crossings, slip_s, near_s, umax) > 0;
-    PetscCall(csv_row_done(f->csv, "flap.csv", ok));
+    PetscCall(csv_row(f->csv, "flap.csv", "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t, tip[0],
+                      tip[1], f->crossings, slip_s, near_s, umax));
   }
   PetscFunctionReturn(0);
 }

@@ -306,7 +306,7 @@ static PetscErrorCode intestine_open_csv(intestine_data *c, sim *s, double tw, d
   char *h;
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(len, &h));
-#define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, len - at, __VA_ARGS__)
+#define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, at < len ? len - at : 0, __VA_ARGS__)
   INTESTINE_HEADER("# intestine: %" PetscInt_FMT " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
                    "t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
                    np, c->b, c->dx, c->level, c->amplitude, tw, Tw, c->n_fluid);
@@ -370,18 +370,24 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt) c->alpha_T = alpha;
   if (s->rank == 0) { /* mpi: rank 0 writes */
     if (!c->csv) PetscCall(intestine_open_csv(c, s, tw, Tw));
-    {
-      int ok = fprintf(c->csv, "%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw) > 0;
-      for (PetscInt k = 0; k <= np; k++) ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT, cw[k]) > 0;
-      ok = ok && fprintf(c->csv, ",%.8g", alpha) > 0;
-      if (c->red)
-        for (PetscInt k = 0; k <= np; k++) ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT, cr[k]) > 0;
-      ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT ",%" PetscInt64_FMT, parked, fluid) > 0;
-      for (PetscInt k = 0; k < np; k++) ok = ok && fprintf(c->csv, ",%.8g", lift[k]) > 0;
-      for (PetscInt k = 0; k < np; k++) ok = ok && fprintf(c->csv, ",%d", peristalsis_value(c->peri, s->t, k)) > 0;
-      ok = ok && fprintf(c->csv, "\n") > 0;
-      PetscCall(csv_row_done(c->csv, "intestine.csv", ok));
-    }
+    const size_t len = 64 + 32 * (size_t)(4 * np + 8);
+    size_t at = 0;
+    char *row;
+    PetscCall(PetscMalloc1(len, &row));
+#define INTESTINE_ROW(...) at += (size_t)snprintf(row + at, at < len ? len - at : 0, __VA_ARGS__)
+    INTESTINE_ROW("%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw);
+    for (PetscInt k = 0; k <= np; k++) INTESTINE_ROW(",%" PetscInt64_FMT, cw[k]);
+    INTESTINE_ROW(",%.8g", alpha);
+    if (c->red)
+      for (PetscInt k = 0; k <= np; k++) INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
+    INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT, parked, fluid);
+    for (PetscInt k = 0; k < np; k++) INTESTINE_ROW(",%.8g", lift[k]);
+    for (PetscInt k = 0; k < np; k++) INTESTINE_ROW(",%d", peristalsis_value(c->peri, s->t, k));
+    INTESTINE_ROW("\n");
+#undef INTESTINE_ROW
+    PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes", len);
+    PetscCall(csv_line(c->csv, "intestine.csv", row));
+    PetscCall(PetscFree(row));
   }
   PetscCall(PetscFree(lift));
   PetscCall(PetscFree2(cw, cr));

@@ -36,6 +36,13 @@ add_test(NAME cli_blowup_stops_cleanly COMMAND ${DMHS_EXPECT_FAIL}
   --no-nan ${DMHS_CLI_OUT}/blowup --
   ${DMHS_EXE} ${QUICK} -dt 2e-3 -preflight warn -t_end 0.5 -output_interval 0.002 -output_dir ${DMHS_CLI_OUT}/blowup)
 set_tests_properties(cli_blowup_stops_cleanly PROPERTIES LABELS cli TIMEOUT 60)
+# finite positions and velocities but a non-finite acceleration at t = 0 (gravity 1e300 overflows the
+# wall pressure): stopped before snap_000000.h5, naming step, particle and field
+add_test(NAME cli_nonfinite_acceleration_stops COMMAND ${DMHS_EXPECT_FAIL}
+  "run blew up at step 0, t = 0.* particle gid [0-9]+ .*non-finite or invalid acceleration"
+  --no-nan ${DMHS_CLI_OUT}/gravity --
+  ${DMHS_EXE} ${QUICK} -gravity 1e300 -preflight warn -t_end 0.01 -output_dir ${DMHS_CLI_OUT}/gravity)
+set_tests_properties(cli_nonfinite_acceleration_stops PROPERTIES LABELS cli TIMEOUT 60)
 
 add_test(NAME cli_log_view COMMAND ${DMHS_EXE} ${QUICK} -t_end 0.01 -log_view -output_dir ${DMHS_CLI_OUT}/h)
 set_tests_properties(cli_log_view PROPERTIES LABELS cli
