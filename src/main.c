@@ -15,8 +15,9 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
   (void)comm;
   (void)ctx;
   if (p == PETSC_ERROR_INITIAL) {
-    int rank;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    int rank = 0, mpi_up = 0;
+    MPI_Initialized(&mpi_up);
+    if (mpi_up) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, mess ? mess : "(no message)");
     fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
     if (!first_error[0]) snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
@@ -30,9 +31,24 @@ int main(int argc, char **argv) {
   PetscBool help_only = PETSC_FALSE, traceback = PETSC_FALSE;
   PetscErrorCode ierr;
   PetscMPIInt size;
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  /* installed before PetscInitialize, so that an error reading the options (a
+   * missing or malformed -options_file) is one line too; never popped: it was
+   * allocated before PETSc's tracing allocator, which must not free it */
+  PetscPushErrorHandler(dmhs_error_handler, NULL);
+  ierr = PetscInitialize(&argc, &argv, NULL, help);
+  if (ierr) {
+    int mpi_up = 0;
+    MPI_Initialized(&mpi_up);
+    if (mpi_up) {
+      /* the other ranks may wait for rank 0's options: only an abort frees them */
+      MPI_Comm_size(MPI_COMM_WORLD, &size);
+      if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+      MPI_Finalize();
+    }
+    return 1;
+  }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
-  if (!traceback) PetscCall(PetscPushErrorHandler(dmhs_error_handler, NULL));
+  if (traceback) PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
   ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
   if (!ierr && !help_only) ierr = sim_run(s);
   if (ierr) {
@@ -44,7 +60,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   PetscCall(sim_destroy(&s));
-  if (!traceback) PetscCall(PetscPopErrorHandler());
+  if (traceback) PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return 0;
 }

@@ -23,7 +23,35 @@ dmhs_cli_fail(cli_bad_value "-sph_h must be > 0" ${QUICK} -sph_h -1 -output_dir 
 dmhs_cli_fail(cli_bad_enum "sph_kernel" ${QUICK} -sph_kernel gauss -output_dir ${DMHS_CLI_OUT}/d)
 dmhs_cli_fail(cli_non_square_lattice "lattice must be square" ${QUICK} -channel_nx 30 -output_dir ${DMHS_CLI_OUT}/e)
 dmhs_cli_fail(cli_unwritable_output_dir "-output_dir /proc/dmhs" ${QUICK} -output_dir /proc/dmhs/out)
-dmhs_cli_fail(cli_missing_options_file "options_file|Unable to open" -options_file ${DMHS_INPUT}/no-such-case.opts)
+# errors while PETSc reads the options files are one line too (the handler is in place before PetscInitialize)
+add_test(NAME cli_missing_options_file COMMAND ${DMHS_EXPECT_FAIL}
+  "^dmhs: error: Unable to open options file .*no-such-case.opts" --lines 2 --
+  ${DMHS_EXE} -options_file ${DMHS_INPUT}/no-such-case.opts)
+set_tests_properties(cli_missing_options_file PROPERTIES LABELS cli TIMEOUT 60)
+# Values validated where they are read (include/dmhs/options.h): one line naming the option, the
+# value and what it takes
+add_test(NAME cli_bad_options_file COMMAND ${DMHS_EXPECT_FAIL}
+  "^dmhs: error: Unknown first token in options file .*bad-options.opts line 3: channel_nx" --lines 2 --
+  ${DMHS_EXE} -options_file ${CMAKE_CURRENT_LIST_DIR}/bad-options.opts)
+set_tests_properties(cli_bad_options_file PROPERTIES LABELS cli TIMEOUT 60)
+foreach(case "t_end;inf" "dt;inf" "sph_c0;inf" "sph_nu;nan" "sph_h;-inf" "gravity;1e999")
+  list(GET case 0 opt)
+  list(GET case 1 value)
+  dmhs_cli_fail(cli_nonfinite_${opt} "-${opt} ${value}: not finite; -${opt} takes a finite real number"
+    ${QUICK} -${opt} ${value} -output_dir ${DMHS_CLI_OUT}/nonfinite)
+endforeach()
+dmhs_cli_fail(cli_body_force_components "-body_force 1e-4,0,0: 3 values, but -body_force takes up to 2"
+  ${QUICK} -body_force 1e-4,0,0 -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_array_element "-body_force 1e-4,x: 'x' is not a number" ${QUICK} -body_force 1e-4,x
+  -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_real "-dt garbage: not a number; -dt takes a finite real number"
+  ${QUICK} -dt garbage -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_int "-channel_nx 2.5: not an integer" ${QUICK} -channel_nx 2.5 -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_bool "-quiet maybe: not a boolean" ${QUICK} -quiet maybe -output_dir ${DMHS_CLI_OUT}/k)
+# an option last on the line without its value (-dt alone used to mean -dt 0, automatic)
+dmhs_cli_fail(cli_missing_value "option -dt was given without a value; it takes a finite real number"
+  ${QUICK} -output_dir ${DMHS_CLI_OUT}/k -dt)
+dmhs_cli_fail(cli_missing_string "option -output_dir was given without a value" ${QUICK} -output_dir)
 # the published dt = 1e-4 s exceeds the viscous limit at 40 x 80: refused before step 0
 dmhs_cli_fail(cli_preflight_published_dt "viscosity .*EXCEEDED.*pre-flight check failed"
   -options_file ${DMHS_INPUT}/poiseuille.opts -dt 1e-4 -output_dir ${DMHS_CLI_OUT}/f)
