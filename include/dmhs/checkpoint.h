@@ -2,7 +2,9 @@
  * bitwise, in one HDF5 file written collectively and atomically (<file>.tmp,
  * then rename: a failed write leaves the previous checkpoint intact).
  *   attributes of /:   magic "DMHS-CHECKPOINT", format_version, dmhs_version,
- *                      scene, options, n_ranks, n_particles, step, t, dt,
+ *                      scene, options, physics_options (every physics option's
+ *                      value, "name value" lines: options_physics), n_ranks,
+ *                      n_particles, step, t, dt,
  *                      next_output_t, next_progress_t, body_accel, snapshot_index
  *   /particles/<field> every FIELD_CHECKPOINT field at its native width
  *   /particles/rank_counts  owned particles per rank when written
@@ -17,7 +19,8 @@
 struct sim;
 
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
-#define CHECKPOINT_FORMAT_VERSION 2 /* 2: x_build (neighbour lists with a skin) */
+/* 2: x_build (neighbour lists with a skin); 3: physics_options */
+#define CHECKPOINT_FORMAT_VERSION 3
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;

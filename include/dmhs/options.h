@@ -43,6 +43,18 @@ PetscErrorCode options_get_int(PetscOptions options, const char pre[], const cha
 PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const char opt[],
                                 PetscBool *value, PetscBool *set);
 
+/* Every value the readers returned is recorded (the last one per option).
+ * options_physics: "name value\n" lines, sorted, of the recorded options that
+ * are not run control (-t_end, -output_*, -checkpoint_*, -restart*, -quiet,
+ * -progress_interval, -dump_final, -debug_*, -partition_imbalance, -preflight):
+ * what a checkpoint stores. PetscFree it. */
+PetscErrorCode options_physics(char **text);
+/* The differences between a stored options_physics text and the current one,
+ * "-name X in the checkpoint, Y now; ..." in report, and how many. */
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len, int *n_changed);
+/* Clears the record (sim_destroy). */
+void options_forget(void);
+
 #undef PetscOptionsReal
 #undef PetscOptionsInt
 #undef PetscOptionsBool

@@ -11,6 +11,180 @@
 #include "dmhs/sim.h"
 #include "dmhs/options.h"
 
+/* ---- the values every reader returned (for the restart comparison) ---- */
+
+typedef struct {
+  char *name, *value;
+} options_entry;
+
+static options_entry *options_seen;
+static size_t options_n_seen, options_cap_seen;
+
+/* Plain malloc: the table may outlive PETSc's allocator (it is cleared by options_forget). */
+static PetscErrorCode options_record(const char opt[], const char value[]) {
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < options_n_seen; k++)
+    if (!strcmp(options_seen[k].name, opt)) {
+      char *copy = strdup(value);
+      PetscCheck(copy, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
+      free(options_seen[k].value);
+      options_seen[k].value = copy;
+      PetscFunctionReturn(0);
+    }
+  if (options_n_seen == options_cap_seen) {
+    const size_t cap = 2 * options_cap_seen + 64;
+    options_entry *grown = realloc(options_seen, cap * sizeof(*grown));
+    PetscCheck(grown, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
+    options_seen = grown;
+    options_cap_seen = cap;
+  }
+  options_entry *e = &options_seen[options_n_seen];
+  e->name = strdup(opt);
+  e->value = strdup(value);
+  PetscCheck(e->name && e->value, PETSC_COMM_SELF, PETSC_ERR_MEM,
+             "out of memory recording option %s", opt);
+  options_n_seen++;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode options_record_real(const char opt[], const PetscReal *v, PetscInt n) {
+  char text[1024];
+  size_t at = 0;
+  PetscFunctionBeginUser;
+  text[0] = 0;
+  for (PetscInt k = 0; k < n && at < sizeof(text); k++) {
+    /* the shortest text that reads back as the same double: exact, and as the user wrote it */
+    char num[32];
+    for (int digits = 6; digits <= 17; digits++) {
+      snprintf(num, sizeof(num), "%.*g", digits, v[k]);
+      if (strtod(num, NULL) == v[k])
+        break;
+    }
+    at += (size_t)snprintf(text + at, sizeof(text) - at, "%s%s", k ? "," : "", num);
+  }
+  PetscCall(options_record(opt, text));
+  PetscFunctionReturn(0);
+}
+
+void options_forget(void) {
+  for (size_t k = 0; k < options_n_seen; k++) {
+    free(options_seen[k].name);
+    free(options_seen[k].value);
+  }
+  free(options_seen);
+  options_seen = NULL;
+  options_n_seen = options_cap_seen = 0;
+}
+
+/* Options that may differ between a run and its restart: when and where output
+ * goes, how long to run, checks and diagnostics that do not change the state. */
+static const char *const options_run_control[] = {"-t_end",
+                                                  "-output_dir",
+                                                  "-output_interval",
+                                                  "-output_snapshots",
+                                                  "-progress_interval",
+                                                  "-quiet",
+                                                  "-checkpoint_interval",
+                                                  "-checkpoint_at_end",
+                                                  "-restart",
+                                                  "-restart_allow_change",
+                                                  "-dump_final",
+                                                  "-debug_migration",
+                                                  "-debug_halo",
+                                                  "-partition_imbalance",
+                                                  "-preflight",
+                                                  "-dmhs_traceback"};
+
+static int options_is_run_control(const char *name) {
+  for (size_t k = 0; k < sizeof(options_run_control) / sizeof(options_run_control[0]); k++)
+    if (!strcmp(name, options_run_control[k]))
+      return 1;
+  return 0;
+}
+
+static int options_entry_cmp(const void *a, const void *b) {
+  return strcmp(((const options_entry *)a)->name, ((const options_entry *)b)->name);
+}
+
+PetscErrorCode options_physics(char **text) {
+  size_t len = 1;
+  PetscFunctionBeginUser;
+  qsort(options_seen, options_n_seen, sizeof(*options_seen), options_entry_cmp);
+  for (size_t k = 0; k < options_n_seen; k++)
+    len += strlen(options_seen[k].name) + strlen(options_seen[k].value) + 2;
+  PetscCall(PetscMalloc1(len, text));
+  (*text)[0] = 0;
+  for (size_t k = 0; k < options_n_seen; k++) {
+    if (options_is_run_control(options_seen[k].name))
+      continue;
+    PetscCall(PetscStrlcat(*text, options_seen[k].name, len));
+    PetscCall(PetscStrlcat(*text, " ", len));
+    PetscCall(PetscStrlcat(*text, options_seen[k].value, len));
+    PetscCall(PetscStrlcat(*text, "\n", len));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The value of name in a "name value\n" list, or NULL; *vlen its length. */
+static const char *options_lookup(const char *list, const char *name, size_t *vlen) {
+  const size_t nlen = strlen(name);
+  for (const char *line = list; line && *line;) {
+    const char *end = strchr(line, '\n');
+    const size_t llen = end ? (size_t)(end - line) : strlen(line);
+    if (llen > nlen && !strncmp(line, name, nlen) && line[nlen] == ' ') {
+      *vlen = llen - nlen - 1;
+      return line + nlen + 1;
+    }
+    line = end ? end + 1 : NULL;
+  }
+  return NULL;
+}
+
+static void options_append(char *report, size_t len, int *n, const char *name, const char *was,
+                           size_t was_len, const char *now, size_t now_len) {
+  const size_t at = strlen(report);
+  if (at + 1 < len)
+    snprintf(report + at, len - at, "%s%s %.*s in the checkpoint, %.*s now", *n ? "; " : "", name,
+             (int)was_len, was ? was : "(not set)", (int)now_len, now ? now : "(not set)");
+  (*n)++;
+}
+
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
+                                       int *n_changed) {
+  char *now;
+  PetscFunctionBeginUser;
+  PetscCall(options_physics(&now));
+  report[0] = 0;
+  *n_changed = 0;
+  for (int pass = 0; pass < 2; pass++) {
+    const char *a = pass ? stored : now, *b = pass ? now : stored;
+    for (const char *line = a; *line;) {
+      const char *end = strchr(line, '\n');
+      const size_t llen = end ? (size_t)(end - line) : strlen(line);
+      const char *space = memchr(line, ' ', llen);
+      if (space) {
+        char name[128];
+        const size_t nlen = PetscMin((size_t)(space - line), sizeof(name) - 1);
+        size_t blen = 0;
+        memcpy(name, line, nlen);
+        name[nlen] = 0;
+        const char *value = space + 1, *other = options_lookup(b, name, &blen);
+        const size_t vlen = llen - nlen - 1;
+        if (!other && !options_is_run_control(name)) { /* only on one side */
+          if (pass)
+            options_append(report, len, n_changed, name, value, vlen, NULL, 9);
+          else
+            options_append(report, len, n_changed, name, NULL, 9, value, vlen);
+        } else if (other && !pass && (blen != vlen || strncmp(value, other, vlen)))
+          options_append(report, len, n_changed, name, other, blen, value, vlen);
+      }
+      line = end ? end + 1 : line + llen;
+    }
+  }
+  PetscCall(PetscFree(now));
+  PetscFunctionReturn(0);
+}
+
 /* The option's text: *found, and *raw = NULL when it was given without a value. */
 static PetscErrorCode options_raw(PetscOptions options, const char pre[], const char opt[],
                                   const char **raw, PetscBool *found) {
@@ -55,8 +229,8 @@ static PetscErrorCode options_check_real(MPI_Comm comm, const char opt[], const 
     snprintf(what, sizeof(what), "'%s' is ", elem);
   PetscCheck(options_parse_real(elem, &v), comm, PETSC_ERR_ARG_WRONG,
              "%s %s: %snot a number; %s takes %s (%s)", opt, raw, what, opt, takes, text);
-  PetscCheck(isfinite(v), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "%s %s: %snot finite; %s takes %s (%s)", opt, raw, what, opt, takes, text);
+  PetscCheck(isfinite(v), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: %snot finite; %s takes %s (%s)",
+             opt, raw, what, opt, takes, text);
   PetscFunctionReturn(0);
 }
 
@@ -136,6 +310,7 @@ PetscErrorCode options_real(PetscOptionItems *po, const char opt[], const char t
     PetscCall(options_check_real(po->comm, opt, raw, raw, "a finite real number", text));
   }
   PetscCall(PetscOptionsReal_Private(po, opt, text, man, current, value, set));
+  PetscCall(options_record_real(opt, value, 1));
   PetscFunctionReturn(0);
 }
 
@@ -149,6 +324,11 @@ PetscErrorCode options_int(PetscOptionItems *po, const char opt[], const char te
   if (found)
     PetscCall(options_check_int(po->comm, opt, raw, lb, ub, text));
   PetscCall(PetscOptionsInt_Private(po, opt, text, man, current, value, set, lb, ub));
+  {
+    char v[32];
+    snprintf(v, sizeof(v), "%" PetscInt_FMT, *value);
+    PetscCall(options_record(opt, v));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -161,6 +341,7 @@ PetscErrorCode options_bool(PetscOptionItems *po, const char opt[], const char t
   if (found)
     PetscCall(options_check_bool(po->comm, opt, raw, text));
   PetscCall(PetscOptionsBool_Private(po, opt, text, man, current, value, set));
+  PetscCall(options_record(opt, *value ? "true" : "false"));
   PetscFunctionReturn(0);
 }
 
@@ -177,6 +358,7 @@ PetscErrorCode options_string(PetscOptionItems *po, const char opt[], const char
                opt, raw, len - 1);
   }
   PetscCall(PetscOptionsString_Private(po, opt, text, man, current, value, len, set));
+  PetscCall(options_record(opt, value));
   PetscFunctionReturn(0);
 }
 
@@ -208,6 +390,7 @@ PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char t
                "%s %s: unknown value; %s takes %s (%s)", opt, raw, opt, takes, text);
   }
   PetscCall(PetscOptionsEnum_Private(po, opt, text, man, list, current, value, set));
+  PetscCall(options_record(opt, (int)*value >= 0 && (int)*value < n ? list[*value] : "?"));
   PetscFunctionReturn(0);
 }
 
@@ -224,7 +407,16 @@ PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const 
     PetscCall(options_need_value(po->comm, opt, raw, takes, text));
     PetscCall(options_check_list(po->comm, opt, raw, *n, 0, text));
   }
-  PetscCall(PetscOptionsRealArray_Private(po, opt, text, man, value, n, set));
+  const PetscInt nmax = *n;
+  PetscBool given;
+  PetscCall(PetscOptionsRealArray_Private(po, opt, text, man, value, n, &given));
+  if (set)
+    *set = given;
+  if (!given)
+    *n = nmax; /* PETSc says 0 when the option is absent: the defaults stay */
+  PetscCall(options_record_real(opt, value, *n));
+  if (!given)
+    *n = 0;
   PetscFunctionReturn(0);
 }
 
@@ -240,7 +432,19 @@ PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], cons
     PetscCall(options_need_value(po->comm, opt, raw, takes, text));
     PetscCall(options_check_list(po->comm, opt, raw, *n, 1, text));
   }
-  PetscCall(PetscOptionsStringArray_Private(po, opt, text, man, value, n, set));
+  PetscBool given;
+  PetscCall(PetscOptionsStringArray_Private(po, opt, text, man, value, n, &given));
+  if (set)
+    *set = given;
+  {
+    char v[1024] = "";
+    for (PetscInt k = 0; given && k < *n; k++) {
+      if (k)
+        PetscCall(PetscStrlcat(v, ",", sizeof(v)));
+      PetscCall(PetscStrlcat(v, value[k], sizeof(v)));
+    }
+    PetscCall(options_record(opt, given ? v : "(default)"));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -387,6 +387,7 @@ PetscErrorCode sim_destroy(sim **sp) {
   PetscCall(cells_destroy(&s->cel));
   PetscCall(particles_destroy(&s->ps));
   PetscCall(registry_finalize());
+  options_forget();
   PetscCall(PetscFree(*sp));
   PetscFunctionReturn(0);
 }

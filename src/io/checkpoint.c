@@ -109,6 +109,10 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
     PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
     PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    char *physics;
+    PetscCall(options_physics(&physics));
+    PetscCall(h5io_put_string(tmp, fid, "physics_options", physics));
+    PetscCall(PetscFree(physics));
     PetscCall(h5io_put_int64s(tmp, fid, "n_ranks", &ranks, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "n_particles", &n, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "step", &step, 1));
@@ -166,6 +170,30 @@ static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const c
   PetscFunctionReturn(0);
 }
 
+/* The physics options of the run that wrote the checkpoint against this run's:
+ * a difference is an error naming the options, unless -restart_allow_change
+ * (then it is printed and kept for run.json). */
+static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t fid) {
+  const size_t len = 65536;
+  char *stored, report[2048];
+  int n_changed;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(len, &stored));
+  PetscCall(h5io_get_string(path, fid, "physics_options", stored, len));
+  PetscCall(options_compare_physics(stored, report, sizeof(report), &n_changed));
+  PetscCall(PetscFree(stored));
+  if (!n_changed) PetscFunctionReturn(0);
+  PetscCheck(s->io.restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-restart %s: %d physics option(s) differ from the run that wrote it: %s; restart with the "
+             "checkpoint's options (its 'options' attribute), or add -restart_allow_change to continue with "
+             "the new ones",
+             path, n_changed, report);
+  PetscCall(PetscPrintf(s->comm, "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n",
+                        path, n_changed, report));
+  PetscCall(PetscStrallocpy(report, &s->io.restart_changes));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode checkpoint_read(sim *s, const char *path) {
   char text[256];
   size_t nf;
@@ -195,6 +223,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
   PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
              "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text, s->scn->name);
+  PetscCall(checkpoint_compare_options(s, path, fid));
 
   /* the scene was built with the current options: it must hold as many particles */
   PetscCall(h5io_get_int64s(path, fid, "n_particles", &n_file, 1));

@@ -48,6 +48,10 @@ PetscErrorCode io_set_from_options(sim *s) {
                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
   PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint file (same scene and options)", NULL,
                                io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
+  PetscCall(PetscOptionsBool("-restart_allow_change",
+                             "Let -restart continue with physics options that differ from the checkpoint's "
+                             "(listed in run.json)",
+                             NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
   PetscOptionsEnd();
   PetscCheck(io->checkpoint_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-checkpoint_interval must be >= 0 (got %g; 0 = never)", io->checkpoint_interval);
@@ -90,6 +94,12 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   fprintf(f, ",\n  \"restart_from\": ");
   if (s->io.restart_file[0]) io_json_string(f, s->io.restart_file);
   else fprintf(f, "null");
+  if (s->io.restart_file[0]) {
+    fprintf(f, ",\n  \"restart_allow_change\": %s,\n  \"restart_changes\": ",
+            s->io.restart_allow_change ? "true" : "false");
+    if (s->io.restart_changes) io_json_string(f, s->io.restart_changes);
+    else fprintf(f, "null");
+  }
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io.start_time);
   fprintf(f, ",\n  \"end\": ");
@@ -154,6 +164,16 @@ PetscErrorCode io_restart(sim *s) {
   if (io->restart_file[0]) {
     const double dt_options = s->dt;
     PetscCall(checkpoint_read(s, io->restart_file));
+    PetscCheck(s->t_end > s->t + 0.5 * s->dt, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-t_end %g s is not after the time of the checkpoint %s (t = %.9g s, step %" PetscInt_FMT
+               "): nothing to run; give a later -t_end",
+               s->t_end, io->restart_file, s->t, s->step);
+    if (io->restart_changes && s->rank == 0) {
+      /* run.json ("running") records what changed from the start */
+      const int err = io_write_run_json(s, "running", NULL, 0);
+      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s", s->output_dir,
+                 strerror(err));
+    }
     PetscCall(sim_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
@@ -239,6 +259,7 @@ PetscErrorCode io_finish(sim *s) {
 PetscErrorCode io_destroy(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(s->io.options));
+  PetscCall(PetscFree(s->io.restart_changes));
   PetscCall(xdmf_destroy(&s->io.xdmf));
   PetscFunctionReturn(0);
 }

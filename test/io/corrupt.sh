@@ -53,8 +53,10 @@ import h5py
 f = h5py.File('$W/rows.h5', 'r+'); v = f['particles/v'][()]; del f['particles/v']; f['particles/v'] = v[:200]"
 expect_fail rows "dataset v in $W/rows.h5 is 200 x 2" -output_dir "$W/o9" -restart "$W/rows.h5"
 
-expect_fail options "holds 260 particles but scene 'poiseuille' built 312" -output_dir "$W/o10" -restart "$GOOD" \
-  -channel_nx 12 -channel_length 6e-4
+expect_fail options "-channel_length 0.0005 in the checkpoint, 0.0006 now; -channel_nx 10 in the checkpoint, 12 now" \
+  -output_dir "$W/o10" -restart "$GOOD" -channel_nx 12 -channel_length 6e-4
+expect_fail options_allowed "holds 260 particles but scene 'poiseuille' built 312" -output_dir "$W/o10" \
+  -restart "$GOOD" -channel_nx 12 -channel_length 6e-4 -restart_allow_change
 
 expect_fail output_dir "/dev/null/sub" -output_dir /dev/null/sub
 
