@@ -11,7 +11,11 @@
  *   /modules/<name>/   private state of modules with checkpoint hooks
  *   /scene/            private state of the scene (e.g. error reports done)
  * Module and scene state is replicated (the same on every rank): hooks store
- * named arrays with checkpoint_put_* and read them back with checkpoint_get_*. */
+ * named arrays with checkpoint_put_* and read them back with checkpoint_get_*.
+ * Every dataset has an attribute "checksum" (uint64 stored as int64): the sum
+ * modulo 2^64 over its rows of FNV-1a 64 of (global row index as 8 bytes little
+ * endian, row bytes), the same whatever the rank split; reading verifies it
+ * and that no gid appears twice, and refuses the file naming the dataset. */
 #ifndef DMHS_CHECKPOINT_H
 #define DMHS_CHECKPOINT_H
 #include <petscsys.h>
@@ -19,7 +23,7 @@
 struct sim;
 
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
-/* 2: x_build (neighbour lists with a skin); 3: physics_options */
+/* 2: x_build (neighbour lists with a skin); 3: physics_options, per-dataset checksums */
 #define CHECKPOINT_FORMAT_VERSION 3
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
