@@ -12,8 +12,10 @@
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 #include "dmhs/sim.h"
 #include "dmhs/io.h"
 #include "dmhs/checkpoint.h"
@@ -22,6 +24,7 @@
 #include "dmhs/migrate.h"
 #include "dmhs/integrate.h"
 #include "h5check.h"
+#include "outdir.h"
 
 static volatile sig_atomic_t io_signal_received = 0;
 
@@ -77,14 +80,41 @@ static void io_json_string(FILE *f, const char *v) {
   fputc('"', f);
 }
 
+/* Writes text to path through path.tmp and a rename; when that fails (disk
+ * full: no room for a second copy) the old file is overwritten in place, its
+ * blocks already allocated, padded with blanks to its old length. 0 or an errno. */
+static int io_replace_file(const char *path, const char *text) {
+  char tmp[PETSC_MAX_PATH_LEN + 24];
+  const size_t len = strlen(text);
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  FILE *f = fopen(tmp, "w");
+  int failed = !f;
+  if (f) {
+    failed = fwrite(text, 1, len, f) != len;
+    failed = fclose(f) != 0 || failed;
+  }
+  if (!failed && !rename(tmp, path)) return 0;
+  const int err = errno ? errno : EIO;
+  unlink(tmp);
+  f = fopen(path, "r+");
+  if (!f) return err;
+  fseek(f, 0, SEEK_END);
+  const long old = ftell(f);
+  rewind(f);
+  failed = fwrite(text, 1, len, f) != len;
+  for (long k = (long)len; k < old && !failed; k++) failed = fputc(' ', f) == EOF;
+  failed = fclose(f) != 0 || failed;
+  return failed ? err : 0;
+}
+
 /* Plain C (no PETSc calls): also used on the error path. Returns 0 or an errno. */
 static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
-  char path[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 24], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16];
+  char path[PETSC_MAX_PATH_LEN + 16], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
+  size_t text_len = 0;
   snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
   snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
-  FILE *f = fopen(tmp, "w");
-  if (!f) return errno ? errno : EIO;
+  FILE *f = open_memstream(&text, &text_len);
+  if (!f) return errno ? errno : ENOMEM;
   fprintf(f, "{\n  \"dmhs_version\": ");
   io_json_string(f, DMHS_VERSION);
   fprintf(f, ",\n  \"scene\": ");
@@ -118,8 +148,9 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   }
   int failed = fprintf(f, "\n}\n") < 0;
   failed = fclose(f) != 0 || failed;
-  if (failed) return EIO;
-  return rename(tmp, path) ? errno : 0;
+  const int err = failed ? ENOMEM : io_replace_file(path, text);
+  free(text);
+  return err;
 }
 
 static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
@@ -134,6 +165,8 @@ static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
 
 void io_record_error(sim *s, const char *message) {
   if (!s || s->rank != 0 || !s->io.run_json_started) return;
+  /* a write the error interrupted (disk full) leaves its temporary file */
+  (void)outdir_remove_tmp(s->output_dir);
   (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr", 1);
 }
 
@@ -146,6 +179,16 @@ PetscErrorCode io_setup(sim *s) {
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
   io_now_iso(io->start_time, sizeof(io->start_time));
+  if (s->rank == 0) {
+    /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
+    const int n_tmp = outdir_remove_tmp(s->output_dir);
+    const int n_snap = io->restart_file[0] ? 0 : outdir_remove_snapshots(s->output_dir, 0);
+    if (n_tmp || n_snap)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "output directory %s: removed %d unfinished .tmp file(s) and %d "
+                            "snapshot/index file(s) of an earlier run\n",
+                            s->output_dir, n_tmp, n_snap));
+  }
   PetscCall(io_run_json(s, "running", PETSC_FALSE));
   io->run_json_started = PETSC_TRUE;
   if (s->rank == 0) PetscCall(xdmf_create(&io->xdmf));
@@ -180,6 +223,14 @@ PetscErrorCode io_restart(sim *s) {
     PetscCall(PetscPrintf(s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
                           io->restart_file, s->step, s->t, s->dt,
                           s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
+    if (s->rank == 0) {
+      /* the snapshots the interrupted run wrote after its checkpoint are written again */
+      const int n = outdir_remove_snapshots(s->output_dir, (long)io->snapshot_index);
+      if (n)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              "output directory %s: removed %d snapshot file(s) written after the checkpoint\n",
+                              s->output_dir, n));
+    }
     if (s->rank == 0 && io->snapshots) {
       /* index the snapshots the interrupted run had written before the checkpoint */
       PetscCall(xdmf_scan(io->xdmf, s->output_dir, io->snapshot_index));
