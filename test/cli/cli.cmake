@@ -84,3 +84,14 @@ dmhs_cli_fail(cli_bad_body_force_type "-body_force_types: 'wall' is not fluid or
 add_test(NAME cli_slurm_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
   ${DMHS_CLI_OUT}/slurm)
 set_tests_properties(cli_slurm_script PROPERTIES LABELS cli TIMEOUT 60)
+# the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
+add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
+  -t_end 0.0101 -output_snapshots false -output_dir ${DMHS_CLI_OUT}/eta)
+set_tests_properties(cli_eta_not_negative PROPERTIES LABELS cli TIMEOUT 60 FAIL_REGULAR_EXPRESSION "ETA +-"
+  PASS_REGULAR_EXPRESSION "step +337 .* ETA +0.0 s")
+# out of memory (a 1 GB address-space limit, 4e8 particles): says what and how much
+add_test(NAME cli_out_of_memory COMMAND ${DMHS_EXPECT_FAIL}
+  "out of memory: cannot allocate 3200 MB for particle field 'gid' \\(room for 400000000 particles.*160 bytes per particle"
+  -- bash -c "ulimit -v 1000000 && exec \"$0\" \"$@\"" ${DMHS_EXE} -scene box -box_nx 20000 -box_ny 20000
+  -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/oom)
+set_tests_properties(cli_out_of_memory PROPERTIES LABELS cli TIMEOUT 60)
