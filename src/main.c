@@ -1,10 +1,11 @@
 /* dmhs: Discrete Multi-Hybrid System solver (SPH liquid + mass-spring solids).
  * PetscInitialize -> sim_create -> sim_run -> sim_destroy -> PetscFinalize. */
+#include <string.h>
 #include "dmhs/sim.h"
 
 static const char help[] = "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
                            "Usage: mpirun -n N dmhs -options_file input/<case>.opts [-option value ...]\n"
-                           "Every option is listed below with its current value and unit.\n\n";
+                           "Every option is listed below once, with its value and unit.\n\n";
 
 static char first_error[512]; /* for run.json (io_record_error) */
 
@@ -35,6 +36,15 @@ int main(int argc, char **argv) {
    * missing or malformed -options_file) is one line too; never popped: it was
    * allocated before PETSc's tracing allocator, which must not free it */
   PetscPushErrorHandler(dmhs_error_handler, NULL);
+  /* -help: dmhs lists its own options (sim_create); PETSc would add its banner,
+   * its generic options and every section again, so it does not see it */
+  int kept = 1;
+  for (int k = 1; k < argc; k++) {
+    if (!strcmp(argv[k], "-help") || !strcmp(argv[k], "--help")) help_only = PETSC_TRUE;
+    else argv[kept++] = argv[k];
+  }
+  argc = kept;
+  argv[argc] = NULL;
   ierr = PetscInitialize(&argc, &argv, NULL, help);
   if (ierr) {
     int mpi_up = 0;
@@ -49,6 +59,7 @@ int main(int argc, char **argv) {
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
   if (traceback) PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
+  if (help_only) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
   ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
   if (!ierr && !help_only) ierr = sim_run(s);
   if (ierr) {

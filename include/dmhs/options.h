@@ -54,6 +54,12 @@ PetscErrorCode options_physics(char **text);
 PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len, int *n_changed);
 /* Clears the record (sim_destroy). */
 void options_forget(void);
+/* -help: from now on the recorded values stay (those of the chosen scene, read
+ * first); options first read later are listed with `note` (static text). */
+void options_help_freeze(const char *note);
+/* -help: every recorded option once, by section in the order first read:
+ * "-name <value as this run would use it>  description". */
+PetscErrorCode options_help_print(MPI_Comm comm);
 
 #undef PetscOptionsReal
 #undef PetscOptionsInt

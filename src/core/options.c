@@ -11,24 +11,40 @@
 #include "dmhs/sim.h"
 #include "dmhs/options.h"
 
-/* ---- the values every reader returned (for the restart comparison) ---- */
+/* ---- the values every reader returned -------------------------------------
+ * For the restart comparison (exact values) and for -help (the section, the
+ * description and the value as shown). */
 
 typedef struct {
-  char *name, *value;
+  char *name, *value;           /* the value, exact (reals read back to the same double) */
+  char *section, *text, *shown; /* -help: PetscOptionsBegin title, description, value shown */
+  const char *note;             /* -help: why the option does not apply, or NULL */
+  size_t order;                 /* first reading */
 } options_entry;
 
 static options_entry *options_seen;
-static size_t options_n_seen, options_cap_seen;
+static size_t options_n_seen, options_cap_seen, options_next_order;
+static PetscBool options_frozen; /* -help: the chosen scene's values stay */
+static const char *options_note;
+
+static char *options_dup(const char *v) {
+  return strdup(v ? v : "");
+}
 
 /* Plain malloc: the table may outlive PETSc's allocator (it is cleared by options_forget). */
-static PetscErrorCode options_record(const char opt[], const char value[]) {
+static PetscErrorCode options_record(PetscOptionItems *po, const char opt[], const char text[],
+                                     const char value[], const char shown[]) {
   PetscFunctionBeginUser;
   for (size_t k = 0; k < options_n_seen; k++)
     if (!strcmp(options_seen[k].name, opt)) {
-      char *copy = strdup(value);
-      PetscCheck(copy, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
+      if (options_frozen)
+        PetscFunctionReturn(0);
+      char *v = options_dup(value), *w = options_dup(shown);
+      PetscCheck(v && w, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
       free(options_seen[k].value);
-      options_seen[k].value = copy;
+      free(options_seen[k].shown);
+      options_seen[k].value = v;
+      options_seen[k].shown = w;
       PetscFunctionReturn(0);
     }
   if (options_n_seen == options_cap_seen) {
@@ -39,30 +55,44 @@ static PetscErrorCode options_record(const char opt[], const char value[]) {
     options_cap_seen = cap;
   }
   options_entry *e = &options_seen[options_n_seen];
-  e->name = strdup(opt);
-  e->value = strdup(value);
-  PetscCheck(e->name && e->value, PETSC_COMM_SELF, PETSC_ERR_MEM,
-             "out of memory recording option %s", opt);
+  e->name = options_dup(opt);
+  e->value = options_dup(value);
+  e->shown = options_dup(shown);
+  e->section = options_dup(po && po->title ? po->title : "");
+  e->text = options_dup(text);
+  e->note = options_note;
+  e->order = options_next_order++;
+  PetscCheck(e->name && e->value && e->shown && e->section && e->text, PETSC_COMM_SELF,
+             PETSC_ERR_MEM, "out of memory recording option %s", opt);
   options_n_seen++;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode options_record_real(const char opt[], const PetscReal *v, PetscInt n) {
-  char text[1024];
+/* The shortest text that reads back as the same double: exact, and as a user writes it. */
+static void options_format_real(double v, char *num, size_t len) {
+  for (int digits = 6; digits <= 17; digits++) {
+    snprintf(num, len, "%.*g", digits, v);
+    if (strtod(num, NULL) == v)
+      break;
+  }
+}
+
+/* n values; shown: the first n_shown of them */
+static PetscErrorCode options_record_real(PetscOptionItems *po, const char opt[], const char text[],
+                                          const PetscReal *v, PetscInt n, PetscInt n_shown) {
+  char value[1024], shown[1024];
   size_t at = 0;
   PetscFunctionBeginUser;
-  text[0] = 0;
-  for (PetscInt k = 0; k < n && at < sizeof(text); k++) {
-    /* the shortest text that reads back as the same double: exact, and as the user wrote it */
+  value[0] = shown[0] = 0;
+  for (PetscInt k = 0, at_shown = 0; k < n && at < sizeof(value); k++) {
     char num[32];
-    for (int digits = 6; digits <= 17; digits++) {
-      snprintf(num, sizeof(num), "%.*g", digits, v[k]);
-      if (strtod(num, NULL) == v[k])
-        break;
-    }
-    at += (size_t)snprintf(text + at, sizeof(text) - at, "%s%s", k ? "," : "", num);
+    options_format_real(v[k], num, sizeof(num));
+    at += (size_t)snprintf(value + at, sizeof(value) - at, "%s%s", k ? "," : "", num);
+    if (k < n_shown && at_shown < (PetscInt)sizeof(shown)) /* shown: 6 digits */
+      at_shown +=
+          snprintf(shown + at_shown, sizeof(shown) - (size_t)at_shown, "%s%g", k ? "," : "", v[k]);
   }
-  PetscCall(options_record(opt, text));
+  PetscCall(options_record(po, opt, text, value, shown));
   PetscFunctionReturn(0);
 }
 
@@ -70,10 +100,51 @@ void options_forget(void) {
   for (size_t k = 0; k < options_n_seen; k++) {
     free(options_seen[k].name);
     free(options_seen[k].value);
+    free(options_seen[k].section);
+    free(options_seen[k].text);
+    free(options_seen[k].shown);
   }
   free(options_seen);
   options_seen = NULL;
   options_n_seen = options_cap_seen = 0;
+  options_frozen = PETSC_FALSE;
+  options_note = NULL;
+}
+
+void options_help_freeze(const char *note) {
+  options_frozen = PETSC_TRUE;
+  options_note = note;
+}
+
+PetscErrorCode options_help_print(MPI_Comm comm) {
+  char *done;
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(options_n_seen + 1, &done));
+  for (size_t k = 0; k < options_n_seen; k++) {
+    if (done[k])
+      continue;
+    const char *section = options_seen[k].section;
+    int all_noted = 1;
+    for (size_t j = k; j < options_n_seen; j++)
+      if (!strcmp(options_seen[j].section, section) && !options_seen[j].note)
+        all_noted = 0;
+    PetscCall(PetscPrintf(comm, "\n%s%s%s%s:\n", section[0] ? section : "Other options",
+                          all_noted ? " (" : "", all_noted ? options_seen[k].note : "",
+                          all_noted ? ")" : ""));
+    for (size_t j = k; j < options_n_seen; j++) {
+      const options_entry *e = &options_seen[j];
+      if (done[j] || strcmp(e->section, section))
+        continue;
+      char head[512];
+      snprintf(head, sizeof(head), "%s <%s>", e->name, e->shown);
+      PetscCall(PetscPrintf(comm, "  %-30s %s%s%s%s\n", head, e->text,
+                            !all_noted && e->note ? " (" : "", !all_noted && e->note ? e->note : "",
+                            !all_noted && e->note ? ")" : ""));
+      done[j] = 1;
+    }
+  }
+  PetscCall(PetscFree(done));
+  PetscFunctionReturn(0);
 }
 
 /* Options that may differ between a run and its restart: when and where output
@@ -103,25 +174,30 @@ static int options_is_run_control(const char *name) {
 }
 
 static int options_entry_cmp(const void *a, const void *b) {
-  return strcmp(((const options_entry *)a)->name, ((const options_entry *)b)->name);
+  return strcmp((*(const options_entry *const *)a)->name, (*(const options_entry *const *)b)->name);
 }
 
 PetscErrorCode options_physics(char **text) {
   size_t len = 1;
+  const options_entry **sorted;
   PetscFunctionBeginUser;
-  qsort(options_seen, options_n_seen, sizeof(*options_seen), options_entry_cmp);
-  for (size_t k = 0; k < options_n_seen; k++)
+  PetscCall(PetscMalloc1(options_n_seen + 1, &sorted));
+  for (size_t k = 0; k < options_n_seen; k++) {
+    sorted[k] = &options_seen[k];
     len += strlen(options_seen[k].name) + strlen(options_seen[k].value) + 2;
+  }
+  qsort(sorted, options_n_seen, sizeof(*sorted), options_entry_cmp);
   PetscCall(PetscMalloc1(len, text));
   (*text)[0] = 0;
   for (size_t k = 0; k < options_n_seen; k++) {
-    if (options_is_run_control(options_seen[k].name))
+    if (options_is_run_control(sorted[k]->name))
       continue;
-    PetscCall(PetscStrlcat(*text, options_seen[k].name, len));
+    PetscCall(PetscStrlcat(*text, sorted[k]->name, len));
     PetscCall(PetscStrlcat(*text, " ", len));
-    PetscCall(PetscStrlcat(*text, options_seen[k].value, len));
+    PetscCall(PetscStrlcat(*text, sorted[k]->value, len));
     PetscCall(PetscStrlcat(*text, "\n", len));
   }
+  PetscCall(PetscFree(sorted));
   PetscFunctionReturn(0);
 }
 
@@ -310,7 +386,7 @@ PetscErrorCode options_real(PetscOptionItems *po, const char opt[], const char t
     PetscCall(options_check_real(po->comm, opt, raw, raw, "a finite real number", text));
   }
   PetscCall(PetscOptionsReal_Private(po, opt, text, man, current, value, set));
-  PetscCall(options_record_real(opt, value, 1));
+  PetscCall(options_record_real(po, opt, text, value, 1, 1));
   PetscFunctionReturn(0);
 }
 
@@ -327,7 +403,7 @@ PetscErrorCode options_int(PetscOptionItems *po, const char opt[], const char te
   {
     char v[32];
     snprintf(v, sizeof(v), "%" PetscInt_FMT, *value);
-    PetscCall(options_record(opt, v));
+    PetscCall(options_record(po, opt, text, v, v));
   }
   PetscFunctionReturn(0);
 }
@@ -341,7 +417,7 @@ PetscErrorCode options_bool(PetscOptionItems *po, const char opt[], const char t
   if (found)
     PetscCall(options_check_bool(po->comm, opt, raw, text));
   PetscCall(PetscOptionsBool_Private(po, opt, text, man, current, value, set));
-  PetscCall(options_record(opt, *value ? "true" : "false"));
+  PetscCall(options_record(po, opt, text, *value ? "true" : "false", *value ? "true" : "false"));
   PetscFunctionReturn(0);
 }
 
@@ -358,7 +434,7 @@ PetscErrorCode options_string(PetscOptionItems *po, const char opt[], const char
                opt, raw, len - 1);
   }
   PetscCall(PetscOptionsString_Private(po, opt, text, man, current, value, len, set));
-  PetscCall(options_record(opt, value));
+  PetscCall(options_record(po, opt, text, value, value[0] ? value : "none"));
   PetscFunctionReturn(0);
 }
 
@@ -390,7 +466,12 @@ PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char t
                "%s %s: unknown value; %s takes %s (%s)", opt, raw, opt, takes, text);
   }
   PetscCall(PetscOptionsEnum_Private(po, opt, text, man, list, current, value, set));
-  PetscCall(options_record(opt, (int)*value >= 0 && (int)*value < n ? list[*value] : "?"));
+  {
+    const char *v = (int)*value >= 0 && (int)*value < n ? list[*value] : "?";
+    char described[600];
+    snprintf(described, sizeof(described), "%s; one of %s", text, choices);
+    PetscCall(options_record(po, opt, described, v, v));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -414,7 +495,13 @@ PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const 
     *set = given;
   if (!given)
     *n = nmax; /* PETSc says 0 when the option is absent: the defaults stay */
-  PetscCall(options_record_real(opt, value, *n));
+  /* shown: what was given, else the defaults; a list longer than a vector (one value per
+   * type, report times) without its unset tail */
+  PetscInt n_shown = *n;
+  if (!given && nmax > 3) /* zeros or copies of the value before */
+    while (n_shown > 1 && (value[n_shown - 1] == 0 || value[n_shown - 1] == value[n_shown - 2]))
+      n_shown--;
+  PetscCall(options_record_real(po, opt, text, value, *n, n_shown));
   if (!given)
     *n = 0;
   PetscFunctionReturn(0);
@@ -443,7 +530,7 @@ PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], cons
         PetscCall(PetscStrlcat(v, ",", sizeof(v)));
       PetscCall(PetscStrlcat(v, value[k], sizeof(v)));
     }
-    PetscCall(options_record(opt, given ? v : "(default)"));
+    PetscCall(options_record(po, opt, text, given ? v : "(default)", given ? v : "default"));
   }
   PetscFunctionReturn(0);
 }

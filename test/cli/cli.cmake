@@ -7,7 +7,10 @@ set(QUICK -options_file ${DMHS_INPUT}/poiseuille-quick.opts -quiet)
 
 add_test(NAME cli_help COMMAND ${DMHS_EXE} -help)
 set_tests_properties(cli_help PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "-scene <now poiseuille.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
+  PASS_REGULAR_EXPRESSION "-scene <poiseuille>.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
+# each option once, with the chosen scene's values (test/cli/help.sh)
+add_test(NAME cli_help_scene_values COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/help.sh ${DMHS_EXE} ${DMHS_INPUT})
+set_tests_properties(cli_help_scene_values PROPERTIES LABELS cli TIMEOUT 60)
 
 function(dmhs_cli_fail name regex)
   add_test(NAME ${name} COMMAND ${DMHS_EXPECT_FAIL} "${regex}" -- ${DMHS_EXE} ${ARGN})
