@@ -29,6 +29,7 @@ typedef struct io_state {
   struct xdmf *xdmf;          /* rank 0: the snapshots indexed so far */
   char *options;              /* resolved options (PetscOptionsGetAll) */
   char start_time[32];        /* ISO 8601, UTC */
+  char previous_status[32];   /* status in the run.json this run replaced ("" = none) */
   PetscBool run_json_started;
 } io_state;
 

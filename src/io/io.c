@@ -8,7 +8,9 @@
  *
  * run.json (rank 0, rewritten atomically): dmhs_version, scene, ranks,
  * options, restart_from, start, end (ISO 8601 UTC), status ("running",
- * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message. */
+ * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message,
+ * previous_status (the status in the run.json this run replaced: "running"
+ * there means that run was killed, or is still going). */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -130,6 +132,9 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
     if (s->io.restart_changes) io_json_string(f, s->io.restart_changes);
     else fprintf(f, "null");
   }
+  fprintf(f, ",\n  \"previous_status\": ");
+  if (s->io.previous_status[0]) io_json_string(f, s->io.previous_status);
+  else fprintf(f, "null");
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io.start_time);
   fprintf(f, ",\n  \"end\": ");
@@ -172,6 +177,22 @@ void io_record_error(sim *s, const char *message) {
 
 /* ---- setup, restart ------------------------------------------------------ */
 
+/* The "status" of an existing <dir>/run.json, or "" (plain C). */
+static void io_previous_status(const char *dir, char *status, size_t len) {
+  char path[PETSC_MAX_PATH_LEN + 16], text[8192];
+  const char *key = "\"status\": \"";
+  status[0] = 0;
+  snprintf(path, sizeof(path), "%s/run.json", dir);
+  FILE *f = fopen(path, "r");
+  if (!f) return;
+  const size_t n = fread(text, 1, sizeof(text) - 1, f);
+  fclose(f);
+  text[n] = 0;
+  const char *at = strstr(text, key), *end = at ? strchr(at + strlen(key), '"') : NULL;
+  if (at && end && (size_t)(end - at - strlen(key)) < len)
+    snprintf(status, len, "%.*s", (int)(end - at - strlen(key)), at + strlen(key));
+}
+
 PetscErrorCode io_setup(sim *s) {
   io_state *io = &s->io;
   struct sigaction sa;
@@ -179,6 +200,7 @@ PetscErrorCode io_setup(sim *s) {
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
   io_now_iso(io->start_time, sizeof(io->start_time));
+  if (s->rank == 0) io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
   if (s->rank == 0) {
     /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
     const int n_tmp = outdir_remove_tmp(s->output_dir);
