@@ -3,9 +3,10 @@
 #include <string.h>
 #include "dmhs/sim.h"
 
-static const char help[] = "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
-                           "Usage: mpirun -n N dmhs -options_file input/<case>.opts [-option value ...]\n"
-                           "Every option is listed below once, with its value and unit.\n\n";
+static const char help[] =
+    "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
+    "Usage: mpirun -n N dmhs -options_file input/<case>.opts [-option value ...]\n"
+    "Every option is listed below once, with its value and unit.\n\n";
 
 static char first_error[512]; /* for run.json (io_record_error) */
 
@@ -18,7 +19,8 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
   if (p == PETSC_ERROR_INITIAL) {
     int rank = 0, mpi_up = 0;
     MPI_Initialized(&mpi_up);
-    if (mpi_up) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (mpi_up)
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, mess ? mess : "(no message)");
     fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
     if (!first_error[0]) snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
@@ -40,8 +42,10 @@ int main(int argc, char **argv) {
    * its generic options and every section again, so it does not see it */
   int kept = 1;
   for (int k = 1; k < argc; k++) {
-    if (!strcmp(argv[k], "-help") || !strcmp(argv[k], "--help")) help_only = PETSC_TRUE;
-    else argv[kept++] = argv[k];
+    if (!strcmp(argv[k], "-help") || !strcmp(argv[k], "--help"))
+      help_only = PETSC_TRUE;
+    else
+      argv[kept++] = argv[k];
   }
   argc = kept;
   argv[argc] = NULL;
@@ -52,14 +56,17 @@ int main(int argc, char **argv) {
     if (mpi_up) {
       /* the other ranks may wait for rank 0's options: only an abort frees them */
       MPI_Comm_size(MPI_COMM_WORLD, &size);
-      if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+      if (size > 1)
+        MPI_Abort(MPI_COMM_WORLD, 1);
       MPI_Finalize();
     }
     return 1;
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
-  if (traceback) PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
-  if (help_only) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
+  if (traceback)
+    PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
+  if (help_only)
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
   ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
   if (!ierr && !help_only) ierr = sim_run(s);
   if (ierr) {
@@ -71,7 +78,8 @@ int main(int argc, char **argv) {
     return 1;
   }
   PetscCall(sim_destroy(&s));
-  if (traceback) PetscCall(PetscPopErrorHandler());
+  if (traceback)
+    PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return 0;
 }

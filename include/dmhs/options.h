@@ -51,7 +51,8 @@ PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const ch
 PetscErrorCode options_physics(char **text);
 /* The differences between a stored options_physics text and the current one,
  * "-name X in the checkpoint, Y now; ..." in report, and how many. */
-PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len, int *n_changed);
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
+                                       int *n_changed);
 /* Clears the record (sim_destroy). */
 void options_forget(void);
 /* -help: from now on the recorded values stay (those of the chosen scene, read

@@ -122,7 +122,8 @@ PetscErrorCode registry_print_help(sim *s, const char *chosen) {
   size_t first = N_SCENES;
   PetscFunctionBeginUser;
   for (size_t k = 0; k < N_SCENES; k++)
-    if (!strcmp(scene_table[k].name, chosen)) first = k;
+    if (!strcmp(scene_table[k].name, chosen))
+      first = k;
   if (first == N_SCENES) {
     scene *none;
     PetscCall(registry_create_scene(chosen, &none)); /* the error naming the scenes */
@@ -132,21 +133,25 @@ PetscErrorCode registry_print_help(sim *s, const char *chosen) {
   snprintf(note, sizeof(note), "not used by scene %s", chosen);
   options_help_freeze(note);
   for (size_t k = 0; k < N_SCENES; k++)
-    if (k != first) PetscCall(registry_help_scene(s, k, printed));
+    if (k != first)
+      PetscCall(registry_help_scene(s, k, printed));
   /* modules only an option enables (the nonlinear bond: -bond_style nonlinear)
    * get a second pass with that choice made, so -help lists every option */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-bond_style", &user_style));
   if (!user_style) {
     PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
-    for (size_t k = 0; k < N_SCENES; k++) PetscCall(registry_help_scene(s, k, printed));
+    for (size_t k = 0; k < N_SCENES; k++)
+      PetscCall(registry_help_scene(s, k, printed));
     PetscCall(PetscOptionsClearValue(NULL, "-bond_style"));
   }
-  PetscCall(PetscPrintf(s->comm,
-                        "Options of scene %s with the values this run would use (defaults, the options file and "
-                        "the command line applied), then those of the other scenes:\n",
-                        chosen));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "Options of scene %s with the values this run would use (defaults, the options file and "
+      "the command line applied), then those of the other scenes:\n",
+      chosen));
   PetscCall(options_help_print(s->comm));
-  PetscCall(PetscPrintf(s->comm, "\nPETSc's own options (-log_view, -malloc_dump, -options_left, ...) work as "
-                                 "usual and are not listed.\n"));
+  PetscCall(PetscPrintf(
+      s->comm, "\nPETSc's own options (-log_view, -malloc_dump, -options_left, ...) work as "
+               "usual and are not listed.\n"));
   PetscFunctionReturn(0);
 }

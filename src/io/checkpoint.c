@@ -49,21 +49,26 @@ static uint64_t checkpoint_row_hash(uint64_t row, const unsigned char *bytes, si
 }
 
 /* Checksum of rows [offset, offset + n_local) held here; reduce: add the other ranks' rows. */
-static PetscErrorCode checkpoint_checksum(MPI_Comm comm, const field_desc *f, const void *data, PetscInt n_local,
-                                          PetscInt64 offset, PetscBool reduce, uint64_t *sum) {
+static PetscErrorCode checkpoint_checksum(MPI_Comm comm, const field_desc *f, const void *data,
+                                          PetscInt n_local, PetscInt64 offset, PetscBool reduce,
+                                          uint64_t *sum) {
   const size_t row = fields_row_bytes(f);
   uint64_t local = 0;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < n_local; i++)
-    local += checkpoint_row_hash((uint64_t)(offset + i), (const unsigned char *)data + row * (size_t)i, row);
-  if (reduce) PetscCallMPI(MPI_Allreduce(&local, sum, 1, MPI_UINT64_T, MPI_SUM, comm));
-  else *sum = local;
+    local += checkpoint_row_hash((uint64_t)(offset + i),
+                                 (const unsigned char *)data + row * (size_t)i, row);
+  if (reduce)
+    PetscCallMPI(MPI_Allreduce(&local, sum, 1, MPI_UINT64_T, MPI_SUM, comm));
+  else
+    *sum = local;
   PetscFunctionReturn(0);
 }
 
 /* h5io_write_rows (native width), then the dataset's checksum. Collective. */
-static PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid_t loc, const field_desc *f,
-                                            const void *data, PetscInt n_local, PetscInt64 offset, PetscInt64 n) {
+static PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid_t loc,
+                                            const field_desc *f, const void *data, PetscInt n_local,
+                                            PetscInt64 offset, PetscInt64 n) {
   uint64_t sum;
   hid_t dset;
   PetscFunctionBeginUser;
@@ -78,9 +83,9 @@ static PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid
 
 /* The rows read here against the dataset's checksum: reduce when the rows are
  * split over the ranks (collective then), not when every rank read them all. */
-static PetscErrorCode checkpoint_verify(MPI_Comm comm, const char *path, hid_t loc, const char *where,
-                                        const field_desc *f, const void *data, PetscInt n_local, PetscInt64 offset,
-                                        PetscBool reduce) {
+static PetscErrorCode checkpoint_verify(MPI_Comm comm, const char *path, hid_t loc,
+                                        const char *where, const field_desc *f, const void *data,
+                                        PetscInt n_local, PetscInt64 offset, PetscBool reduce) {
   uint64_t sum;
   PetscInt64 stored;
   hid_t dset;
@@ -90,15 +95,17 @@ static PetscErrorCode checkpoint_verify(MPI_Comm comm, const char *path, hid_t l
   PetscCall(h5io_get_int64s(path, dset, "checksum", &stored, 1));
   PetscCallHDF5(path, H5Dclose(dset));
   PetscCheck((uint64_t)stored == sum, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s is corrupt: dataset /%s/%s fails its checksum (stored %016llx, read %016llx); restart "
+             "checkpoint %s is corrupt: dataset /%s/%s fails its checksum (stored %016llx, read "
+             "%016llx); restart "
              "from an intact copy",
              path, where, f->name, (unsigned long long)stored, (unsigned long long)sum);
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode checkpoint_read_rows(MPI_Comm comm, const char *path, hid_t loc, const char *where,
-                                           const field_desc *f, void *data, PetscInt n_local, PetscInt64 offset,
-                                           PetscInt64 n, PetscBool reduce) {
+static PetscErrorCode checkpoint_read_rows(MPI_Comm comm, const char *path, hid_t loc,
+                                           const char *where, const field_desc *f, void *data,
+                                           PetscInt n_local, PetscInt64 offset, PetscInt64 n,
+                                           PetscBool reduce) {
   PetscFunctionBeginUser;
   PetscCall(h5io_read_rows(comm, path, loc, f, data, n_local, offset, n));
   PetscCall(checkpoint_verify(comm, path, loc, where, f, data, n_local, offset, reduce));
@@ -117,11 +124,14 @@ static PetscErrorCode checkpoint_check_gids(sim *s, const char *path, PetscInt64
   PetscMPIInt *send_n, *recv_n, *send_at, *recv_at;
   PetscInt64 *out, *in, bad_local[2] = {-1, -1}, bad[2];
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc4(s->size, &send_n, s->size, &recv_n, s->size + 1, &send_at, s->size + 1, &recv_at));
+  PetscCall(PetscCalloc4(s->size, &send_n, s->size, &recv_n, s->size + 1, &send_at, s->size + 1,
+                         &recv_at));
   for (PetscInt i = 0; i < n; i++) {
     const PetscInt64 g = s->ps.gid[i];
-    if (g < 0) bad_local[1] = PetscMax(bad_local[1], -g); /* negative: reported below */
-    else send_n[g % s->size]++;
+    if (g < 0)
+      bad_local[1] = PetscMax(bad_local[1], -g); /* negative: reported below */
+    else
+      send_n[g % s->size]++;
   }
   PetscCallMPI(MPI_Alltoall(send_n, 1, MPI_INT, recv_n, 1, MPI_INT, s->comm));
   for (PetscMPIInt r = 0; r < s->size; r++) {
@@ -129,23 +139,28 @@ static PetscErrorCode checkpoint_check_gids(sim *s, const char *path, PetscInt64
     recv_at[r + 1] = recv_at[r] + recv_n[r];
   }
   PetscCall(PetscMalloc2(send_at[s->size] + 1, &out, recv_at[s->size] + 1, &in));
-  for (PetscMPIInt r = 0; r < s->size; r++) send_n[r] = 0;
+  for (PetscMPIInt r = 0; r < s->size; r++)
+    send_n[r] = 0;
   for (PetscInt i = 0; i < n; i++) {
     const PetscInt64 g = s->ps.gid[i];
-    if (g < 0) continue;
+    if (g < 0)
+      continue;
     const PetscMPIInt r = (PetscMPIInt)(g % s->size);
     out[send_at[r] + send_n[r]++] = g;
   }
-  PetscCallMPI(MPI_Alltoallv(out, send_n, send_at, MPIU_INT64, in, recv_n, recv_at, MPIU_INT64, s->comm));
+  PetscCallMPI(
+      MPI_Alltoallv(out, send_n, send_at, MPIU_INT64, in, recv_n, recv_at, MPIU_INT64, s->comm));
   qsort(in, (size_t)recv_at[s->size], sizeof(*in), checkpoint_cmp_int64);
   for (PetscMPIInt k = 1; k < recv_at[s->size] && bad_local[0] < 0; k++)
-    if (in[k] == in[k - 1]) bad_local[0] = in[k];
+    if (in[k] == in[k - 1])
+      bad_local[0] = in[k];
   PetscCallMPI(MPI_Allreduce(bad_local, bad, 2, MPIU_INT64, MPI_MAX, s->comm));
   PetscCall(PetscFree2(out, in));
   PetscCall(PetscFree4(send_n, recv_n, send_at, recv_at));
-  PetscCheck(bad[1] < 0, s->comm, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s is corrupt: dataset /particles/gid holds the negative gid -%" PetscInt64_FMT, path,
-             bad[1]);
+  PetscCheck(
+      bad[1] < 0, s->comm, PETSC_ERR_FILE_UNEXPECTED,
+      "checkpoint %s is corrupt: dataset /particles/gid holds the negative gid -%" PetscInt64_FMT,
+      path, bad[1]);
   PetscCheck(bad[0] < 0, s->comm, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s is corrupt: dataset /particles/gid holds gid %" PetscInt64_FMT
              " more than once (%" PetscInt64_FMT " particles)",
@@ -162,14 +177,16 @@ PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const d
   const field_desc d = checkpoint_array_desc(name, FIELD_REAL);
   PetscFunctionBeginUser;
   /* replicated state: rank 0's copy is written */
-  PetscCall(checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
+  PetscCall(
+      checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n) {
   const field_desc d = checkpoint_array_desc(name, FIELD_INT64);
   PetscFunctionBeginUser;
-  PetscCall(checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
+  PetscCall(
+      checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
   PetscFunctionReturn(0);
 }
 
@@ -200,7 +217,8 @@ static PetscErrorCode checkpoint_get(checkpoint_io *io, const char *name, field_
   PetscCheck(stored == n, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: '%s' of %s has %" PetscInt_FMT " values, expected %" PetscInt_FMT, io->path, name,
              io->owner, stored, n);
-  PetscCall(checkpoint_read_rows(io->comm, io->path, io->group, io->where, &d, v, n, 0, n, PETSC_FALSE));
+  PetscCall(
+      checkpoint_read_rows(io->comm, io->path, io->group, io->where, &d, v, n, 0, n, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
@@ -251,8 +269,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
     if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
-    PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]), s->ps.n_owned, offset,
-                                    n));
+    PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]),
+                                    s->ps.n_owned, offset, n));
   }
   PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &counts_desc, &my_count, 1, s->rank, s->size));
   PetscCallHDF5(tmp, H5Gclose(grp));
@@ -307,14 +325,19 @@ static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t
   PetscCall(h5io_get_string(path, fid, "physics_options", stored, len));
   PetscCall(options_compare_physics(stored, report, sizeof(report), &n_changed));
   PetscCall(PetscFree(stored));
-  if (!n_changed) PetscFunctionReturn(0);
-  PetscCheck(s->io.restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-             "-restart %s: %d physics option(s) differ from the run that wrote it: %s; restart with the "
-             "checkpoint's options (its 'options' attribute), or add -restart_allow_change to continue with "
-             "the new ones",
-             path, n_changed, report);
-  PetscCall(PetscPrintf(s->comm, "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n",
-                        path, n_changed, report));
+  if (!n_changed)
+    PetscFunctionReturn(0);
+  PetscCheck(
+      s->io.restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+      "-restart %s: %d physics option(s) differ from the run that wrote it: %s; restart with the "
+      "checkpoint's options (its 'options' attribute), or add -restart_allow_change to continue "
+      "with "
+      "the new ones",
+      path, n_changed, report);
+  PetscCall(PetscPrintf(
+      s->comm,
+      "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n", path,
+      n_changed, report));
   PetscCall(PetscStrallocpy(report, &s->io.restart_changes));
   PetscFunctionReturn(0);
 }
@@ -364,8 +387,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(checkpoint_open_group(path, fid, "particles", "particle fields", &grp));
   if (ranks == s->size) {
     PetscInt64 mine;
-    PetscCall(checkpoint_read_rows(s->comm, path, grp, "particles", &counts_desc, &mine, 1, s->rank, s->size,
-                                   PETSC_TRUE));
+    PetscCall(checkpoint_read_rows(s->comm, path, grp, "particles", &counts_desc, &mine, 1, s->rank,
+                                   s->size, PETSC_TRUE));
     PetscCheck(mine >= 0 && mine <= n_file, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
                "checkpoint %s: rank_counts[%d] = %" PetscInt64_FMT " is out of range", path, (int)s->rank, mine);
     n_local = (PetscInt)mine;
@@ -389,9 +412,10 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   /* a duplicated particle first (the precise complaint), then every dataset's checksum */
   PetscCall(checkpoint_check_gids(s, path, n_file));
   for (size_t k = 0; k < nf; k++) {
-    if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
-    PetscCall(checkpoint_verify(s->comm, path, grp, "particles", &t[k], *fields_member(&s->ps, &t[k]), n_local,
-                                offset, PETSC_TRUE));
+    if (!(t[k].flags & FIELD_CHECKPOINT))
+      continue;
+    PetscCall(checkpoint_verify(s->comm, path, grp, "particles", &t[k],
+                                *fields_member(&s->ps, &t[k]), n_local, offset, PETSC_TRUE));
   }
   PetscCallHDF5(path, H5Gclose(grp));
 

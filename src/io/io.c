@@ -53,10 +53,11 @@ PetscErrorCode io_set_from_options(sim *s) {
                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
   PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint file (same scene and options)", NULL,
                                io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
-  PetscCall(PetscOptionsBool("-restart_allow_change",
-                             "Let -restart continue with physics options that differ from the checkpoint's "
-                             "(listed in run.json)",
-                             NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
+  PetscCall(PetscOptionsBool(
+      "-restart_allow_change",
+      "Let -restart continue with physics options that differ from the checkpoint's "
+      "(listed in run.json)",
+      NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
   PetscOptionsEnd();
   PetscCheck(io->checkpoint_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-checkpoint_interval must be >= 0 (got %g; 0 = never)", io->checkpoint_interval);
@@ -95,16 +96,19 @@ static int io_replace_file(const char *path, const char *text) {
     failed = fwrite(text, 1, len, f) != len;
     failed = fclose(f) != 0 || failed;
   }
-  if (!failed && !rename(tmp, path)) return 0;
+  if (!failed && !rename(tmp, path))
+    return 0;
   const int err = errno ? errno : EIO;
   unlink(tmp);
   f = fopen(path, "r+");
-  if (!f) return err;
+  if (!f)
+    return err;
   fseek(f, 0, SEEK_END);
   const long old = ftell(f);
   rewind(f);
   failed = fwrite(text, 1, len, f) != len;
-  for (long k = (long)len; k < old && !failed; k++) failed = fputc(' ', f) == EOF;
+  for (long k = (long)len; k < old && !failed; k++)
+    failed = fputc(' ', f) == EOF;
   failed = fclose(f) != 0 || failed;
   return failed ? err : 0;
 }
@@ -116,7 +120,8 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
   snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
   FILE *f = open_memstream(&text, &text_len);
-  if (!f) return errno ? errno : ENOMEM;
+  if (!f)
+    return errno ? errno : ENOMEM;
   fprintf(f, "{\n  \"dmhs_version\": ");
   io_json_string(f, DMHS_VERSION);
   fprintf(f, ",\n  \"scene\": ");
@@ -129,12 +134,16 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   if (s->io.restart_file[0]) {
     fprintf(f, ",\n  \"restart_allow_change\": %s,\n  \"restart_changes\": ",
             s->io.restart_allow_change ? "true" : "false");
-    if (s->io.restart_changes) io_json_string(f, s->io.restart_changes);
-    else fprintf(f, "null");
+    if (s->io.restart_changes)
+      io_json_string(f, s->io.restart_changes);
+    else
+      fprintf(f, "null");
   }
   fprintf(f, ",\n  \"previous_status\": ");
-  if (s->io.previous_status[0]) io_json_string(f, s->io.previous_status);
-  else fprintf(f, "null");
+  if (s->io.previous_status[0])
+    io_json_string(f, s->io.previous_status);
+  else
+    fprintf(f, "null");
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io.start_time);
   fprintf(f, ",\n  \"end\": ");
@@ -184,7 +193,8 @@ static void io_previous_status(const char *dir, char *status, size_t len) {
   status[0] = 0;
   snprintf(path, sizeof(path), "%s/run.json", dir);
   FILE *f = fopen(path, "r");
-  if (!f) return;
+  if (!f)
+    return;
   const size_t n = fread(text, 1, sizeof(text) - 1, f);
   fclose(f);
   text[n] = 0;
@@ -200,7 +210,8 @@ PetscErrorCode io_setup(sim *s) {
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
   io_now_iso(io->start_time, sizeof(io->start_time));
-  if (s->rank == 0) io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
+  if (s->rank == 0)
+    io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
   if (s->rank == 0) {
     /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
     const int n_tmp = outdir_remove_tmp(s->output_dir);
@@ -229,15 +240,16 @@ PetscErrorCode io_restart(sim *s) {
   if (io->restart_file[0]) {
     const double dt_options = s->dt;
     PetscCall(checkpoint_read(s, io->restart_file));
-    PetscCheck(s->t_end > s->t + 0.5 * s->dt, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-t_end %g s is not after the time of the checkpoint %s (t = %.9g s, step %" PetscInt_FMT
-               "): nothing to run; give a later -t_end",
-               s->t_end, io->restart_file, s->t, s->step);
+    PetscCheck(
+        s->t_end > s->t + 0.5 * s->dt, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+        "-t_end %g s is not after the time of the checkpoint %s (t = %.9g s, step %" PetscInt_FMT
+        "): nothing to run; give a later -t_end",
+        s->t_end, io->restart_file, s->t, s->step);
     if (io->restart_changes && s->rank == 0) {
       /* run.json ("running") records what changed from the start */
       const int err = io_write_run_json(s, "running", NULL, 0);
-      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s", s->output_dir,
-                 strerror(err));
+      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
+                 s->output_dir, strerror(err));
     }
     PetscCall(sim_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
@@ -249,9 +261,10 @@ PetscErrorCode io_restart(sim *s) {
       /* the snapshots the interrupted run wrote after its checkpoint are written again */
       const int n = outdir_remove_snapshots(s->output_dir, (long)io->snapshot_index);
       if (n)
-        PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                              "output directory %s: removed %d snapshot file(s) written after the checkpoint\n",
-                              s->output_dir, n));
+        PetscCall(PetscPrintf(
+            PETSC_COMM_SELF,
+            "output directory %s: removed %d snapshot file(s) written after the checkpoint\n",
+            s->output_dir, n));
     }
     if (s->rank == 0 && io->snapshots) {
       /* index the snapshots the interrupted run had written before the checkpoint */

@@ -158,8 +158,10 @@ static PetscErrorCode cantilever_diagnose(scene *self, sim *s) {
   double d[2], kin = 0, pot = 0;
   PetscFunctionBeginUser;
   /* rows at step 0 and at output times */
-  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
-  if (!c->csv) PetscCall(cantilever_open_csv(c, s));
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
+    PetscFunctionReturn(0);
+  if (!c->csv)
+    PetscCall(cantilever_open_csv(c, s));
   PetscCall(cantilever_tip(s, d));
   PetscCall(cantilever_energies(s, &kin, &pot));
   if (c->csv)

@@ -312,7 +312,8 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
   PetscCall(flap_gather_strip(f, s));
   PetscCall(flap_count_crossings(f, s));
   /* rows at step 0 and at output times; a restarted run continues the file */
-  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
+    PetscFunctionReturn(0);
   if (s->rank == 0 && !f->csv) { /* mpi: rank 0 writes */
     char header[160];
     snprintf(header, sizeof(header),
@@ -327,8 +328,8 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
     char slip_s[32] = "", near_s[32] = "";
     if (isfinite(slip)) snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
     if (isfinite(near)) snprintf(near_s, sizeof(near_s), "%.6g", near);
-    PetscCall(csv_row(f->csv, "flap.csv", "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t, tip[0],
-                      tip[1], f->crossings, slip_s, near_s, umax));
+    PetscCall(csv_row(f->csv, "flap.csv", "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t,
+                      tip[0], tip[1], f->crossings, slip_s, near_s, umax));
   }
   PetscFunctionReturn(0);
 }
@@ -343,7 +344,8 @@ static PetscErrorCode flap_checkpoint_write(scene *self, sim *s, struct checkpoi
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(PetscMalloc1(f->n_fluid + 1, &side));
-  for (PetscInt g = 0; g < f->n_fluid; g++) side[g] = f->side[g];
+  for (PetscInt g = 0; g < f->n_fluid; g++)
+    side[g] = f->side[g];
   PetscCall(checkpoint_put_ints(io, "flap_crossings", &crossings, 1));
   PetscCall(checkpoint_put_ints(io, "flap_side", side, f->n_fluid));
   PetscCall(PetscFree(side));
@@ -359,7 +361,8 @@ static PetscErrorCode flap_checkpoint_read(scene *self, sim *s, struct checkpoin
   PetscCall(checkpoint_get_ints(io, "flap_crossings", &crossings, 1));
   PetscCall(checkpoint_get_ints(io, "flap_side", side, f->n_fluid));
   f->crossings = (PetscInt)crossings;
-  for (PetscInt g = 0; g < f->n_fluid; g++) f->side[g] = (signed char)side[g];
+  for (PetscInt g = 0; g < f->n_fluid; g++)
+    f->side[g] = (signed char)side[g];
   PetscCall(PetscFree(side));
   PetscFunctionReturn(0);
 }

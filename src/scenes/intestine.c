@@ -307,20 +307,26 @@ static PetscErrorCode intestine_open_csv(intestine_data *c, sim *s, double tw, d
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(len, &h));
 #define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, at < len ? len - at : 0, __VA_ARGS__)
-  INTESTINE_HEADER("# intestine: %" PetscInt_FMT " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
+  INTESTINE_HEADER("# intestine: %" PetscInt_FMT
+                   " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
                    "t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
                    np, c->b, c->dx, c->level, c->amplitude, tw, Tw, c->n_fluid);
   INTESTINE_HEADER("t,sub,x_F");
-  for (PetscInt k = 0; k <= np; k++) INTESTINE_HEADER(",white_%" PetscInt_FMT, k);
+  for (PetscInt k = 0; k <= np; k++)
+    INTESTINE_HEADER(",white_%" PetscInt_FMT, k);
   INTESTINE_HEADER(",alpha");
   if (c->red)
-    for (PetscInt k = 0; k <= np; k++) INTESTINE_HEADER(",red_%" PetscInt_FMT, k);
+    for (PetscInt k = 0; k <= np; k++)
+      INTESTINE_HEADER(",red_%" PetscInt_FMT, k);
   INTESTINE_HEADER(",overflow,fluid");
-  for (PetscInt k = 0; k < np; k++) INTESTINE_HEADER(",lift_%" PetscInt_FMT, k);
-  for (PetscInt k = 0; k < np; k++) INTESTINE_HEADER(",s_%" PetscInt_FMT, k);
+  for (PetscInt k = 0; k < np; k++)
+    INTESTINE_HEADER(",lift_%" PetscInt_FMT, k);
+  for (PetscInt k = 0; k < np; k++)
+    INTESTINE_HEADER(",s_%" PetscInt_FMT, k);
   INTESTINE_HEADER("\n");
 #undef INTESTINE_HEADER
-  PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv header longer than %zu bytes", len);
+  PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "intestine.csv header longer than %zu bytes", len);
   PetscCall(csv_open(s, "intestine.csv", h, &c->csv));
   PetscCall(PetscFree(h));
   PetscFunctionReturn(0);
@@ -369,23 +375,29 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   }
   if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt) c->alpha_T = alpha;
   if (s->rank == 0) { /* mpi: rank 0 writes */
-    if (!c->csv) PetscCall(intestine_open_csv(c, s, tw, Tw));
+    if (!c->csv)
+      PetscCall(intestine_open_csv(c, s, tw, Tw));
     const size_t len = 64 + 32 * (size_t)(4 * np + 8);
     size_t at = 0;
     char *row;
     PetscCall(PetscMalloc1(len, &row));
 #define INTESTINE_ROW(...) at += (size_t)snprintf(row + at, at < len ? len - at : 0, __VA_ARGS__)
     INTESTINE_ROW("%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw);
-    for (PetscInt k = 0; k <= np; k++) INTESTINE_ROW(",%" PetscInt64_FMT, cw[k]);
+    for (PetscInt k = 0; k <= np; k++)
+      INTESTINE_ROW(",%" PetscInt64_FMT, cw[k]);
     INTESTINE_ROW(",%.8g", alpha);
     if (c->red)
-      for (PetscInt k = 0; k <= np; k++) INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
+      for (PetscInt k = 0; k <= np; k++)
+        INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
     INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT, parked, fluid);
-    for (PetscInt k = 0; k < np; k++) INTESTINE_ROW(",%.8g", lift[k]);
-    for (PetscInt k = 0; k < np; k++) INTESTINE_ROW(",%d", peristalsis_value(c->peri, s->t, k));
+    for (PetscInt k = 0; k < np; k++)
+      INTESTINE_ROW(",%.8g", lift[k]);
+    for (PetscInt k = 0; k < np; k++)
+      INTESTINE_ROW(",%d", peristalsis_value(c->peri, s->t, k));
     INTESTINE_ROW("\n");
 #undef INTESTINE_ROW
-    PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes", len);
+    PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes",
+               len);
     PetscCall(csv_line(c->csv, "intestine.csv", row));
     PetscCall(PetscFree(row));
   }

@@ -19,7 +19,8 @@ static void make_sim(sim *s) {
   s->dom.hi[0] = s->dom.hi[1] = 1;
   OK(particles_create(&s->ps));
   const double x[2] = {0.1, 0.2}, v[2] = {0, 0};
-  for (int k = 0; k < 3; k++) OK(particles_add_owned(&s->ps, 10 + k, PTYPE_FLUID, x, v, 1.0, 1000.0, NULL));
+  for (int k = 0; k < 3; k++)
+    OK(particles_add_owned(&s->ps, 10 + k, PTYPE_FLUID, x, v, 1.0, 1000.0, NULL));
 }
 
 static void test_check_state(void **state) {
