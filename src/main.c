@@ -1,10 +1,12 @@
 /* dmhs: Discrete Multi-Hybrid System solver (SPH liquid + mass-spring solids).
  * PetscInitialize -> sim_create -> sim_run -> sim_destroy -> PetscFinalize. */
+#include <string.h>
 #include "dmhs/sim.h"
 
-static const char help[] = "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
-                           "Usage: mpirun -n N dmhs -options_file input/<case>.opts [-option value ...]\n"
-                           "Every option is listed below with its current value and unit.\n\n";
+static const char help[] =
+    "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
+    "Usage: mpirun -n N dmhs -options_file input/<case>.opts [-option value ...]\n"
+    "Every option is listed below once, with its value and unit.\n\n";
 
 static char first_error[512]; /* for run.json (io_record_error) */
 
@@ -15,8 +17,10 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
   (void)comm;
   (void)ctx;
   if (p == PETSC_ERROR_INITIAL) {
-    int rank;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    int rank = 0, mpi_up = 0;
+    MPI_Initialized(&mpi_up);
+    if (mpi_up)
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, mess ? mess : "(no message)");
     fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
     if (!first_error[0]) snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
@@ -30,9 +34,39 @@ int main(int argc, char **argv) {
   PetscBool help_only = PETSC_FALSE, traceback = PETSC_FALSE;
   PetscErrorCode ierr;
   PetscMPIInt size;
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  /* installed before PetscInitialize, so that an error reading the options (a
+   * missing or malformed -options_file) is one line too; never popped: it was
+   * allocated before PETSc's tracing allocator, which must not free it */
+  PetscPushErrorHandler(dmhs_error_handler, NULL);
+  /* -help: dmhs lists its own options (sim_create); PETSc would add its banner,
+   * its generic options and every section again, so it does not see it */
+  int kept = 1;
+  for (int k = 1; k < argc; k++) {
+    if (!strcmp(argv[k], "-help") || !strcmp(argv[k], "--help"))
+      help_only = PETSC_TRUE;
+    else
+      argv[kept++] = argv[k];
+  }
+  argc = kept;
+  argv[argc] = NULL;
+  ierr = PetscInitialize(&argc, &argv, NULL, help);
+  if (ierr) {
+    int mpi_up = 0;
+    MPI_Initialized(&mpi_up);
+    if (mpi_up) {
+      /* the other ranks may wait for rank 0's options: only an abort frees them */
+      MPI_Comm_size(MPI_COMM_WORLD, &size);
+      if (size > 1)
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      MPI_Finalize();
+    }
+    return 1;
+  }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
-  if (!traceback) PetscCall(PetscPushErrorHandler(dmhs_error_handler, NULL));
+  if (traceback)
+    PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
+  if (help_only)
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
   ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
   if (!ierr && !help_only) ierr = sim_run(s);
   if (ierr) {
@@ -44,7 +78,8 @@ int main(int argc, char **argv) {
     return 1;
   }
   PetscCall(sim_destroy(&s));
-  if (!traceback) PetscCall(PetscPopErrorHandler());
+  if (traceback)
+    PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
   return 0;
 }

@@ -2,14 +2,20 @@
  * bitwise, in one HDF5 file written collectively and atomically (<file>.tmp,
  * then rename: a failed write leaves the previous checkpoint intact).
  *   attributes of /:   magic "DMHS-CHECKPOINT", format_version, dmhs_version,
- *                      scene, options, n_ranks, n_particles, step, t, dt,
+ *                      scene, options, physics_options (every physics option's
+ *                      value, "name value" lines: options_physics), n_ranks,
+ *                      n_particles, step, t, dt,
  *                      next_output_t, next_progress_t, body_accel, snapshot_index
  *   /particles/<field> every FIELD_CHECKPOINT field at its native width
  *   /particles/rank_counts  owned particles per rank when written
  *   /modules/<name>/   private state of modules with checkpoint hooks
  *   /scene/            private state of the scene (e.g. error reports done)
  * Module and scene state is replicated (the same on every rank): hooks store
- * named arrays with checkpoint_put_* and read them back with checkpoint_get_*. */
+ * named arrays with checkpoint_put_* and read them back with checkpoint_get_*.
+ * Every dataset has an attribute "checksum" (uint64 stored as int64): the sum
+ * modulo 2^64 over its rows of FNV-1a 64 of (global row index as 8 bytes little
+ * endian, row bytes), the same whatever the rank split; reading verifies it
+ * and that no gid appears twice, and refuses the file naming the dataset. */
 #ifndef DMHS_CHECKPOINT_H
 #define DMHS_CHECKPOINT_H
 #include <petscsys.h>
@@ -17,7 +23,8 @@
 struct sim;
 
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
-#define CHECKPOINT_FORMAT_VERSION 2 /* 2: x_build (neighbour lists with a skin) */
+/* 2: x_build (neighbour lists with a skin); 3: physics_options, per-dataset checksums */
+#define CHECKPOINT_FORMAT_VERSION 3
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;

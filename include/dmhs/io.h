@@ -17,6 +17,8 @@ typedef struct io_state {
   double checkpoint_interval;            /* -checkpoint_interval [s], 0 = never */
   PetscBool checkpoint_at_end;           /* -checkpoint_at_end */
   char restart_file[PETSC_MAX_PATH_LEN]; /* -restart, "" = fresh start */
+  PetscBool restart_allow_change;        /* -restart_allow_change: physics options may differ */
+  char *restart_changes;                 /* what differed from the checkpoint's options, or NULL */
   /* state */
   PetscBool restarted;   /* the state was read from restart_file */
   double restart_t;      /* t when this session's step loop started [s] */
@@ -27,6 +29,7 @@ typedef struct io_state {
   struct xdmf *xdmf;          /* rank 0: the snapshots indexed so far */
   char *options;              /* resolved options (PetscOptionsGetAll) */
   char start_time[32];        /* ISO 8601, UTC */
+  char previous_status[32];   /* status in the run.json this run replaced ("" = none) */
   PetscBool run_json_started;
 } io_state;
 

@@ -13,7 +13,9 @@ PetscErrorCode registry_create_scene(const char *name, scene **out);
 PetscErrorCode registry_create_module(const char *name, module **out);
 /* Comma-separated list of scene names, for -help and error messages. */
 PetscErrorCode registry_scene_names(char *buf, size_t len);
-/* Runs every scene's and module's options pass so -help lists them all. */
-PetscErrorCode registry_print_help(struct sim *s);
+/* -help: runs the chosen scene's options pass and its modules' (their values
+ * are listed), then every other scene's and module's, and prints each option
+ * once (options_help_print). */
+PetscErrorCode registry_print_help(struct sim *s, const char *chosen);
 
 #endif

@@ -14,6 +14,7 @@
 #include "dmhs/migrate.h"   /* mpi */
 #include "dmhs/io.h"
 #include "dmhs/topology.h"
+#include "dmhs/options.h" /* checked option readers, in every module */
 
 #define SIM_MAX_MODULES 16
 

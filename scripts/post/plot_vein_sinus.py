@@ -3,7 +3,7 @@
 
   scripts/post/plot_vein_sinus.py OUTDIR [--out PATH]
 
-Reads OUTDIR/vein-sinus.csv (cycle,t,gid,x,y,displacement: the liquid that
+Reads OUTDIR/vein-sinus.csv (t,cycle,gid,x,y,displacement: the liquid that
 started in the sinus, once per period) and, for context, the walls (grey) and
 leaflets (black) of the snapshot OUTDIR/snap_*.h5 nearest to each cycle's t.
 The sinus liquid is coloured by its displacement |x - x0| [mm] (minimum image

@@ -139,6 +139,10 @@ PetscErrorCode integrate_check_state(sim *s) {
     else if (!isfinite(ps->v[i][0]) || !isfinite(ps->v[i][1])) bad = "velocity";
     else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0) bad = "density";
     else if (!isfinite(ps->p[i])) bad = "pressure";
+    else if (!isfinite(ps->a[i][0]) || !isfinite(ps->a[i][1]))
+      bad = "acceleration";
+    else if (!isfinite(ps->drho[i]))
+      bad = "density rate";
     PetscCheck(bad || domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
                "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
                ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
@@ -147,10 +151,11 @@ PetscErrorCode integrate_check_state(sim *s) {
                s->dom.hi[1]);
     PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_FP,
                "run blew up at step %" PetscInt_FMT ", t = %g s: particle gid %" PetscInt64_FMT
-               " (type %" PetscInt_FMT ") has a non-finite or invalid %s (x = %g %g, v = %g %g, rho = %g); "
-               "try a smaller -dt (see the stability report)",
-               s->step, s->t, ps->gid[i], ps->type[i], bad, ps->x[i][0], ps->x[i][1], ps->v[i][0], ps->v[i][1],
-               ps->rho[i]);
+               " (type %" PetscInt_FMT
+               ") has a non-finite or invalid %s (x = %g %g, v = %g %g, a = %g %g, "
+               "rho = %g, drho/dt = %g); try a smaller -dt (see the stability report)",
+               s->step, s->t, ps->gid[i], ps->type[i], bad, ps->x[i][0], ps->x[i][1], ps->v[i][0],
+               ps->v[i][1], ps->a[i][0], ps->a[i][1], ps->rho[i], ps->drho[i]);
   }
   PetscCall(PetscLogEventEnd(events.check_state, 0, 0, 0, 0));
   PetscFunctionReturn(0);

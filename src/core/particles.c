@@ -27,11 +27,24 @@ PetscErrorCode particles_reserve(particles *ps, PetscInt n) {
   fields_freeze(PETSC_TRUE);
   /* grow geometrically so appending one particle at a time stays linear */
   PetscInt cap = PetscMax(n, ps->capacity + ps->capacity / 2 + 16);
+  size_t per_particle = 0;
+  for (size_t k = 0; k < nf; k++)
+    per_particle += fields_row_bytes(&t[k]);
   for (size_t k = 0; k < nf; k++) {
     void **member = fields_member(ps, &t[k]);
     void *fresh;
     size_t row = fields_row_bytes(&t[k]);
-    PetscCall(PetscCalloc(row * (size_t)cap, &fresh));
+    /* PETSc's own message names only this function: say what and how much */
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    const PetscErrorCode err = PetscCalloc(row * (size_t)cap, &fresh);
+    PetscCall(PetscPopErrorHandler());
+    PetscCheck(
+        !err, PETSC_COMM_SELF, PETSC_ERR_MEM,
+        "out of memory: cannot allocate %.4g MB for particle field '%s' (room for %" PetscInt_FMT
+        " particles, %" PetscInt_FMT " requested; all fields together need %.4g MB, %zu bytes per "
+        "particle); use more ranks or fewer particles",
+        (double)row * (double)cap / 1e6, t[k].name, cap, n,
+        (double)per_particle * (double)cap / 1e6, per_particle);
     if (*member) PetscCall(PetscMemcpy(fresh, *member, row * (size_t)ps->capacity));
     PetscCall(PetscFree(*member));
     *member = fresh;

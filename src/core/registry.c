@@ -93,45 +93,66 @@ PetscErrorCode registry_create_module(const char *name, module **out) {
   PetscFunctionReturn(0);
 }
 
-/* Every scene's options pass (which enables its modules, with the scene's
- * defaults), then each module's options once. */
-/* One options pass of every scene; prints the enabled modules not printed yet. */
-static PetscErrorCode registry_help_pass(sim *s, PetscBool printed[]) {
+/* -help: the options pass of scene k, then of each module it enables that has
+ * not had its pass yet; modules destroyed after (a pass may look at the others). */
+static PetscErrorCode registry_help_scene(sim *s, size_t k, PetscBool printed[]) {
+  scene *scn;
   PetscFunctionBeginUser;
-  for (size_t k = 0; k < N_SCENES; k++) {
-    scene *scn;
-    PetscCall(registry_create_scene(scene_table[k].name, &scn));
-    PetscCall(scn->set_from_options(scn, s));
-    for (int m = 0; m < s->n_modules; m++) {
-      for (size_t j = 0; j < N_MODULES; j++)
-        if (!strcmp(module_table[j].name, s->modules[m]->name) && !printed[j]) {
-          PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
-          printed[j] = PETSC_TRUE;
-        }
-    }
-    /* destroyed after the pass: an options pass may look at the other enabled modules */
-    for (int m = 0; m < s->n_modules; m++) {
-      PetscCall(s->modules[m]->destroy(s->modules[m]));
-      PetscCall(PetscFree(s->modules[m]));
-    }
-    s->n_modules = 0;
-    PetscCall(scn->destroy(scn));
-    PetscCall(PetscFree(scn));
+  PetscCall(registry_create_scene(scene_table[k].name, &scn));
+  PetscCall(scn->set_from_options(scn, s));
+  for (int m = 0; m < s->n_modules; m++) {
+    for (size_t j = 0; j < N_MODULES; j++)
+      if (!strcmp(module_table[j].name, s->modules[m]->name) && !printed[j]) {
+        PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
+        printed[j] = PETSC_TRUE;
+      }
   }
+  for (int m = 0; m < s->n_modules; m++) {
+    PetscCall(s->modules[m]->destroy(s->modules[m]));
+    PetscCall(PetscFree(s->modules[m]));
+  }
+  s->n_modules = 0;
+  PetscCall(scn->destroy(scn));
+  PetscCall(PetscFree(scn));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode registry_print_help(sim *s) {
+PetscErrorCode registry_print_help(sim *s, const char *chosen) {
+  static char note[96];
   PetscBool printed[N_MODULES] = {PETSC_FALSE}, user_style;
+  size_t first = N_SCENES;
   PetscFunctionBeginUser;
-  PetscCall(registry_help_pass(s, printed));
+  for (size_t k = 0; k < N_SCENES; k++)
+    if (!strcmp(scene_table[k].name, chosen))
+      first = k;
+  if (first == N_SCENES) {
+    scene *none;
+    PetscCall(registry_create_scene(chosen, &none)); /* the error naming the scenes */
+  }
+  /* the chosen scene first: its values are the ones listed (options_help_freeze) */
+  PetscCall(registry_help_scene(s, first, printed));
+  snprintf(note, sizeof(note), "not used by scene %s", chosen);
+  options_help_freeze(note);
+  for (size_t k = 0; k < N_SCENES; k++)
+    if (k != first)
+      PetscCall(registry_help_scene(s, k, printed));
   /* modules only an option enables (the nonlinear bond: -bond_style nonlinear)
    * get a second pass with that choice made, so -help lists every option */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-bond_style", &user_style));
   if (!user_style) {
     PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
-    PetscCall(registry_help_pass(s, printed));
+    for (size_t k = 0; k < N_SCENES; k++)
+      PetscCall(registry_help_scene(s, k, printed));
     PetscCall(PetscOptionsClearValue(NULL, "-bond_style"));
   }
+  PetscCall(PetscPrintf(
+      s->comm,
+      "Options of scene %s with the values this run would use (defaults, the options file and "
+      "the command line applied), then those of the other scenes:\n",
+      chosen));
+  PetscCall(options_help_print(s->comm));
+  PetscCall(PetscPrintf(
+      s->comm, "\nPETSc's own options (-log_view, -malloc_dump, -options_left, ...) work as "
+               "usual and are not listed.\n"));
   PetscFunctionReturn(0);
 }

@@ -269,6 +269,10 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(cells_create(&s->cel));
 
   PetscCall(PetscLogStagePush(events.stage_setup));
+  /* -help: main takes it off the command line; one in an options file is taken off here */
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  *help_only = help = help || *help_only;
+  PetscCall(PetscOptionsClearValue(NULL, "-help"));
   PetscCall(sim_set_from_options(s, scene_name, sizeof(scene_name)));
   /* mpi: decomposition, migration check, halo check and final dump */
   PetscCall(partition_set_from_options(&s->part, s));
@@ -276,10 +280,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(halo_check_set_from_options(s));
   PetscCall(dump_set_from_options(s));
   PetscCall(io_set_from_options(s)); /* io: snapshots, checkpoints, -restart */
-  PetscCall(PetscOptionsHasHelp(NULL, &help));
-  *help_only = help;
   if (help) {
-    PetscCall(registry_print_help(s));
+    PetscCall(registry_print_help(s, scene_name));
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
   }
@@ -387,6 +389,7 @@ PetscErrorCode sim_destroy(sim **sp) {
   PetscCall(cells_destroy(&s->cel));
   PetscCall(particles_destroy(&s->ps));
   PetscCall(registry_finalize());
+  options_forget();
   PetscCall(PetscFree(*sp));
   PetscFunctionReturn(0);
 }

@@ -31,6 +31,13 @@ PetscErrorCode stress_compute(sim *s) {
   PetscFunctionBeginUser;
   PetscCheck(ps->stress_mag, s->comm, PETSC_ERR_ORDER,
              "stress_compute: the scene did not call stress_enable");
+  /* ghosts carry rho, p and v_visc as the last force evaluation left them,
+   * while an owner's rho has had its second kick since: a pair across ranks
+   * would then see other values than the same pair inside one rank. The
+   * owners' current values, forwarded, make the fields independent of the rank
+   * count (the next step refreshes the ghosts anyway). */
+  static const char *const current[] = {"rho", "p", "v_visc"};
+  PetscCall(halo_forward(&s->hal, ps, current, 3));
   PetscCall(PetscCalloc1(n + 1, &W));
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->virial)

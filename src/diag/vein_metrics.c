@@ -19,7 +19,7 @@
  *   it is chosen); max |rho/rho0 - 1| and max |v|/c0 over the liquid.
  * Once per drive period (first output at or after t = k T): the liquid that
  * started in the sinus, one row per particle (gid order) in vein-sinus.csv:
- *   cycle, t, gid, x, y, displacement.
+ *   t, cycle, gid, x, y, displacement.
  * At the end, vein-summary.csv (key,value) and the report: the peak inlet
  * velocities over the first cycle and the run, the measurement point's
  * time-averaged displacement and its peak stress per completed cycle, each
@@ -35,6 +35,7 @@
 #include "dmhs/stress.h"
 #include "dmhs/gather.h"
 #include "dmhs/checkpoint.h"
+#include "dmhs/csv.h"
 
 #define VEIN_FIXED 1e-12 /* fixed-point unit of velocity sums [m/s] */
 
@@ -303,17 +304,6 @@ static PetscErrorCode vein_liquid_bounds(sim *s, double *rho_dev, double *mach) 
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode vein_open(sim *s, const char *name, FILE **f, PetscBool *fresh) {
-  char path[PETSC_MAX_PATH_LEN];
-  PetscFunctionBeginUser;
-  PetscCall(sim_output_path(s, name, path, sizeof(path)));
-  *fresh = s->io.restarted ? PETSC_FALSE : PETSC_TRUE;
-  *f = fopen(path, *fresh ? "w" : "a");
-  PetscCheck(*f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
-             strerror(errno));
-  PetscFunctionReturn(0);
-}
-
 /* The sinus liquid, one row per particle in gid order, on rank 0. */
 static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) {
   const particles *ps = &s->ps;
@@ -341,20 +331,13 @@ static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) 
       key[k] = all[4 * k];
     }
     PetscCall(PetscSortRealWithPermutation(n, key, order));
-    if (!v->sinus) {
-      PetscBool fresh;
-      PetscCall(vein_open(s, "vein-sinus.csv", &v->sinus, &fresh));
-      if (fresh)
-        fprintf(v->sinus, "cycle,t,gid,x,y,displacement\n");
-    }
-    int ok = 1;
-    for (PetscInt k = 0; k < n && ok; k++) {
+    if (!v->sinus)
+      PetscCall(csv_open(s, "vein-sinus.csv", "t,cycle,gid,x,y,displacement\n", &v->sinus));
+    for (PetscInt k = 0; k < n; k++) {
       const double *r = all + 4 * order[k];
-      ok = fprintf(v->sinus, "%" PetscInt_FMT ",%.8g,%.0f,%.9g,%.9g,%.6g\n", cycle, s->t, r[0],
-                   r[1], r[2], r[3]) > 0;
+      PetscCall(csv_row(v->sinus, "vein-sinus.csv", "%.8g,%" PetscInt_FMT ",%.0f,%.9g,%.9g,%.6g\n",
+                        s->t, cycle, r[0], r[1], r[2], r[3]));
     }
-    ok = ok && fflush(v->sinus) == 0;
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write vein-sinus.csv");
     PetscCall(PetscFree2(order, key));
     PetscCall(PetscFree(all));
   }
@@ -434,15 +417,14 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
   }
   if (s->rank == 0) { /* mpi: rank 0 writes */
     if (!v->csv) {
-      PetscBool fresh;
-      PetscCall(vein_open(s, "vein.csv", &v->csv, &fresh));
-      if (fresh)
-        fprintf(v->csv,
-                "# vein: leaflet %g m, g0 %g m/s^2, k_a %g J (at dx = 1e-4 m), T %g s, dx %g m, "
-                "rest gap %g m\n"
-                "t,u_mean,u_centre,tip_upper_x,tip_upper_y,tip_lower_x,tip_lower_y,gap,crossings,"
-                "peak_stress,peak_gid,probe_gid,probe_stress,probe_disp,rho_dev,mach\n",
-                v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, v->lay.rest_gap);
+      char header[512];
+      PetscCall(PetscSNPrintf(
+          header, sizeof(header),
+          "# vein: leaflet %g m, g0 %g m/s^2, k_a %g J (at dx = 1e-4 m), T %g s, dx %g m, rest "
+          "gap %g m\nt,u_mean,u_centre,tip_upper_x,tip_upper_y,tip_lower_x,tip_lower_y,gap,"
+          "crossings,peak_stress,peak_gid,probe_gid,probe_stress,probe_disp,rho_dev,mach\n",
+          v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, v->lay.rest_gap));
+      PetscCall(csv_open(s, "vein.csv", header, &v->csv));
     }
     char ps_s[32], pg_s[32], pr_g[32], pr_s[32], pr_d[32];
     vein_csv_real(ps_s, sizeof(ps_s), peak_gid >= 0, peak);
@@ -456,13 +438,11 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
       pr_g[0] = 0;
     vein_csv_real(pr_s, sizeof(pr_s), v->probe_gid >= 0, probe_stress);
     vein_csv_real(pr_d, sizeof(pr_d), v->probe_gid >= 0, probe_disp);
-    const int ok = fprintf(v->csv,
-                           "%.8g,%.8g,%.8g,%.9g,%.9g,%.9g,%.9g,%.8g,%" PetscInt64_FMT
-                           ",%s,%s,%s,%s,%s,%.6g,%.6g\n",
-                           s->t, u_mean, u_centre, tip[0][0], tip[0][1], tip[1][0], tip[1][1], gap,
-                           v->crossings, ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach) > 0;
-    PetscCheck(ok && fflush(v->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "cannot write vein.csv");
+    PetscCall(csv_row(v->csv, "vein.csv",
+                      "%.8g,%.8g,%.8g,%.9g,%.9g,%.9g,%.9g,%.8g,%" PetscInt64_FMT
+                      ",%s,%s,%s,%s,%s,%.6g,%.6g\n",
+                      s->t, u_mean, u_centre, tip[0][0], tip[0][1], tip[1][0], tip[1][1], gap,
+                      v->crossings, ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach));
   }
   PetscFunctionReturn(0);
 }

@@ -18,6 +18,7 @@
 #include "dmhs/events.h"
 #include "h5check.h"
 #include "h5io.h"
+#include "guard.h"
 
 struct checkpoint_io {
   MPI_Comm comm;
@@ -25,7 +26,147 @@ struct checkpoint_io {
   const char *path;
   hid_t group;
   const char *owner; /* "module <name>" or "scene" */
+  char where[80];    /* the group's path in the file, for messages */
 };
+
+/* ---- checksums ----------------------------------------------------------
+ * Every dataset carries the attribute "checksum": the sum, modulo 2^64, over
+ * its rows of FNV-1a (64 bit) of the row's global index (8 bytes, little
+ * endian) followed by the row's bytes. A sum of per-row hashes does not depend
+ * on how the rows are split over the ranks, so any rank count can check it. */
+
+static uint64_t checkpoint_row_hash(uint64_t row, const unsigned char *bytes, size_t n) {
+  uint64_t h = 14695981039346656037ULL;
+  for (int k = 0; k < 8; k++) {
+    h ^= (row >> (8 * k)) & 0xffu;
+    h *= 1099511628211ULL;
+  }
+  for (size_t k = 0; k < n; k++) {
+    h ^= bytes[k];
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+/* Checksum of rows [offset, offset + n_local) held here; reduce: add the other ranks' rows. */
+static PetscErrorCode checkpoint_checksum(MPI_Comm comm, const field_desc *f, const void *data,
+                                          PetscInt n_local, PetscInt64 offset, PetscBool reduce,
+                                          uint64_t *sum) {
+  const size_t row = fields_row_bytes(f);
+  uint64_t local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < n_local; i++)
+    local += checkpoint_row_hash((uint64_t)(offset + i),
+                                 (const unsigned char *)data + row * (size_t)i, row);
+  if (reduce)
+    PetscCallMPI(MPI_Allreduce(&local, sum, 1, MPI_UINT64_T, MPI_SUM, comm));
+  else
+    *sum = local;
+  PetscFunctionReturn(0);
+}
+
+/* h5io_write_rows (native width), then the dataset's checksum. Collective. */
+static PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid_t loc,
+                                            const field_desc *f, const void *data, PetscInt n_local,
+                                            PetscInt64 offset, PetscInt64 n) {
+  uint64_t sum;
+  hid_t dset;
+  PetscFunctionBeginUser;
+  PetscCall(h5io_write_rows(comm, path, loc, f, data, n_local, offset, n, f->width));
+  PetscCall(checkpoint_checksum(comm, f, data, n_local, offset, PETSC_TRUE, &sum));
+  const PetscInt64 stored = (PetscInt64)sum;
+  PetscCallHDF5(path, dset = H5Dopen2(loc, f->name, H5P_DEFAULT));
+  PetscCall(h5io_put_int64s(path, dset, "checksum", &stored, 1));
+  PetscCallHDF5(path, H5Dclose(dset));
+  PetscFunctionReturn(0);
+}
+
+/* The rows read here against the dataset's checksum: reduce when the rows are
+ * split over the ranks (collective then), not when every rank read them all. */
+static PetscErrorCode checkpoint_verify(MPI_Comm comm, const char *path, hid_t loc,
+                                        const char *where, const field_desc *f, const void *data,
+                                        PetscInt n_local, PetscInt64 offset, PetscBool reduce) {
+  uint64_t sum;
+  PetscInt64 stored;
+  hid_t dset;
+  PetscFunctionBeginUser;
+  PetscCall(checkpoint_checksum(comm, f, data, n_local, offset, reduce, &sum));
+  PetscCallHDF5(path, dset = H5Dopen2(loc, f->name, H5P_DEFAULT));
+  PetscCall(h5io_get_int64s(path, dset, "checksum", &stored, 1));
+  PetscCallHDF5(path, H5Dclose(dset));
+  PetscCheck((uint64_t)stored == sum, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s is corrupt: dataset /%s/%s fails its checksum (stored %016llx, read "
+             "%016llx); restart "
+             "from an intact copy",
+             path, where, f->name, (unsigned long long)stored, (unsigned long long)sum);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode checkpoint_read_rows(MPI_Comm comm, const char *path, hid_t loc,
+                                           const char *where, const field_desc *f, void *data,
+                                           PetscInt n_local, PetscInt64 offset, PetscInt64 n,
+                                           PetscBool reduce) {
+  PetscFunctionBeginUser;
+  PetscCall(h5io_read_rows(comm, path, loc, f, data, n_local, offset, n));
+  PetscCall(checkpoint_verify(comm, path, loc, where, f, data, n_local, offset, reduce));
+  PetscFunctionReturn(0);
+}
+
+static int checkpoint_cmp_int64(const void *a, const void *b) {
+  const PetscInt64 x = *(const PetscInt64 *)a, y = *(const PetscInt64 *)b;
+  return (x > y) - (x < y);
+}
+
+/* Every particle once: each gid goes to rank gid % size, which sorts what it
+ * receives and looks for neighbours that are equal. Collective. */
+static PetscErrorCode checkpoint_check_gids(sim *s, const char *path, PetscInt64 n_file) {
+  const PetscInt n = s->ps.n_owned;
+  PetscMPIInt *send_n, *recv_n, *send_at, *recv_at;
+  PetscInt64 *out, *in, bad_local[2] = {-1, -1}, bad[2];
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc4(s->size, &send_n, s->size, &recv_n, s->size + 1, &send_at, s->size + 1,
+                         &recv_at));
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscInt64 g = s->ps.gid[i];
+    if (g < 0)
+      bad_local[1] = PetscMax(bad_local[1], -g); /* negative: reported below */
+    else
+      send_n[g % s->size]++;
+  }
+  PetscCallMPI(MPI_Alltoall(send_n, 1, MPI_INT, recv_n, 1, MPI_INT, s->comm));
+  for (PetscMPIInt r = 0; r < s->size; r++) {
+    send_at[r + 1] = send_at[r] + send_n[r];
+    recv_at[r + 1] = recv_at[r] + recv_n[r];
+  }
+  PetscCall(PetscMalloc2(send_at[s->size] + 1, &out, recv_at[s->size] + 1, &in));
+  for (PetscMPIInt r = 0; r < s->size; r++)
+    send_n[r] = 0;
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscInt64 g = s->ps.gid[i];
+    if (g < 0)
+      continue;
+    const PetscMPIInt r = (PetscMPIInt)(g % s->size);
+    out[send_at[r] + send_n[r]++] = g;
+  }
+  PetscCallMPI(
+      MPI_Alltoallv(out, send_n, send_at, MPIU_INT64, in, recv_n, recv_at, MPIU_INT64, s->comm));
+  qsort(in, (size_t)recv_at[s->size], sizeof(*in), checkpoint_cmp_int64);
+  for (PetscMPIInt k = 1; k < recv_at[s->size] && bad_local[0] < 0; k++)
+    if (in[k] == in[k - 1])
+      bad_local[0] = in[k];
+  PetscCallMPI(MPI_Allreduce(bad_local, bad, 2, MPIU_INT64, MPI_MAX, s->comm));
+  PetscCall(PetscFree2(out, in));
+  PetscCall(PetscFree4(send_n, recv_n, send_at, recv_at));
+  PetscCheck(
+      bad[1] < 0, s->comm, PETSC_ERR_FILE_UNEXPECTED,
+      "checkpoint %s is corrupt: dataset /particles/gid holds the negative gid -%" PetscInt64_FMT,
+      path, bad[1]);
+  PetscCheck(bad[0] < 0, s->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s is corrupt: dataset /particles/gid holds gid %" PetscInt64_FMT
+             " more than once (%" PetscInt64_FMT " particles)",
+             path, bad[0], n_file);
+  PetscFunctionReturn(0);
+}
 
 static field_desc checkpoint_array_desc(const char *name, field_kind kind) {
   field_desc d = {name, 1, kind, 0, 0, "1"};
@@ -36,14 +177,16 @@ PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const d
   const field_desc d = checkpoint_array_desc(name, FIELD_REAL);
   PetscFunctionBeginUser;
   /* replicated state: rank 0's copy is written */
-  PetscCall(h5io_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n, 1));
+  PetscCall(
+      checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n) {
   const field_desc d = checkpoint_array_desc(name, FIELD_INT64);
   PetscFunctionBeginUser;
-  PetscCall(h5io_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n, 1));
+  PetscCall(
+      checkpoint_write_rows(io->comm, io->path, io->group, &d, v, io->rank == 0 ? n : 0, 0, n));
   PetscFunctionReturn(0);
 }
 
@@ -74,7 +217,8 @@ static PetscErrorCode checkpoint_get(checkpoint_io *io, const char *name, field_
   PetscCheck(stored == n, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: '%s' of %s has %" PetscInt_FMT " values, expected %" PetscInt_FMT, io->path, name,
              io->owner, stored, n);
-  PetscCall(h5io_read_rows(io->comm, io->path, io->group, &d, v, n, 0, n));
+  PetscCall(
+      checkpoint_read_rows(io->comm, io->path, io->group, io->where, &d, v, n, 0, n, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
@@ -93,11 +237,12 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   const field_desc counts_desc = checkpoint_array_desc("rank_counts", FIELD_INT64);
   PetscInt64 offset, n, my_count = s->ps.n_owned;
   hid_t fid, grp;
-  checkpoint_io io = {s->comm, s->rank, tmp, -1, NULL};
+  checkpoint_io io = {s->comm, s->rank, tmp, -1, NULL, ""};
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.checkpoint, 0, 0, 0, 0));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
+  PetscCall(io_guard_finite(s, FIELD_CHECKPOINT, path));
   PetscCall(h5io_create(s->comm, tmp, &fid));
   {
     const PetscInt64 version = CHECKPOINT_FORMAT_VERSION, ranks = s->size, step = s->step,
@@ -107,6 +252,10 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
     PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
     PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    char *physics;
+    PetscCall(options_physics(&physics));
+    PetscCall(h5io_put_string(tmp, fid, "physics_options", physics));
+    PetscCall(PetscFree(physics));
     PetscCall(h5io_put_int64s(tmp, fid, "n_ranks", &ranks, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "n_particles", &n, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "step", &step, 1));
@@ -120,10 +269,10 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
     if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
-    PetscCall(h5io_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]), s->ps.n_owned, offset, n,
-                              t[k].width));
+    PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]),
+                                    s->ps.n_owned, offset, n));
   }
-  PetscCall(h5io_write_rows(s->comm, tmp, grp, &counts_desc, &my_count, 1, s->rank, s->size, 1));
+  PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &counts_desc, &my_count, 1, s->rank, s->size));
   PetscCallHDF5(tmp, H5Gclose(grp));
 
   /* private state of modules and scene */
@@ -164,6 +313,35 @@ static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const c
   PetscFunctionReturn(0);
 }
 
+/* The physics options of the run that wrote the checkpoint against this run's:
+ * a difference is an error naming the options, unless -restart_allow_change
+ * (then it is printed and kept for run.json). */
+static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t fid) {
+  const size_t len = 65536;
+  char *stored, report[2048];
+  int n_changed;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(len, &stored));
+  PetscCall(h5io_get_string(path, fid, "physics_options", stored, len));
+  PetscCall(options_compare_physics(stored, report, sizeof(report), &n_changed));
+  PetscCall(PetscFree(stored));
+  if (!n_changed)
+    PetscFunctionReturn(0);
+  PetscCheck(
+      s->io.restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+      "-restart %s: %d physics option(s) differ from the run that wrote it: %s; restart with the "
+      "checkpoint's options (its 'options' attribute), or add -restart_allow_change to continue "
+      "with "
+      "the new ones",
+      path, n_changed, report);
+  PetscCall(PetscPrintf(
+      s->comm,
+      "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n", path,
+      n_changed, report));
+  PetscCall(PetscStrallocpy(report, &s->io.restart_changes));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode checkpoint_read(sim *s, const char *path) {
   char text[256];
   size_t nf;
@@ -173,7 +351,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscInt n_local;
   PetscBool has;
   hid_t fid, grp;
-  checkpoint_io io = {s->comm, s->rank, path, -1, NULL};
+  checkpoint_io io = {s->comm, s->rank, path, -1, NULL, ""};
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.checkpoint, 0, 0, 0, 0));
   PetscCall(h5io_open(s->comm, path, &fid));
@@ -193,6 +371,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
   PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
              "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text, s->scn->name);
+  PetscCall(checkpoint_compare_options(s, path, fid));
 
   /* the scene was built with the current options: it must hold as many particles */
   PetscCall(h5io_get_int64s(path, fid, "n_particles", &n_file, 1));
@@ -208,7 +387,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(checkpoint_open_group(path, fid, "particles", "particle fields", &grp));
   if (ranks == s->size) {
     PetscInt64 mine;
-    PetscCall(h5io_read_rows(s->comm, path, grp, &counts_desc, &mine, 1, s->rank, s->size));
+    PetscCall(checkpoint_read_rows(s->comm, path, grp, "particles", &counts_desc, &mine, 1, s->rank,
+                                   s->size, PETSC_TRUE));
     PetscCheck(mine >= 0 && mine <= n_file, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
                "checkpoint %s: rank_counts[%d] = %" PetscInt64_FMT " is out of range", path, (int)s->rank, mine);
     n_local = (PetscInt)mine;
@@ -229,6 +409,14 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
     PetscCall(h5io_read_rows(s->comm, path, grp, &t[k], *fields_member(&s->ps, &t[k]), n_local, offset, n_file));
   }
   s->ps.n_owned = n_local;
+  /* a duplicated particle first (the precise complaint), then every dataset's checksum */
+  PetscCall(checkpoint_check_gids(s, path, n_file));
+  for (size_t k = 0; k < nf; k++) {
+    if (!(t[k].flags & FIELD_CHECKPOINT))
+      continue;
+    PetscCall(checkpoint_verify(s->comm, path, grp, "particles", &t[k],
+                                *fields_member(&s->ps, &t[k]), n_local, offset, PETSC_TRUE));
+  }
   PetscCallHDF5(path, H5Gclose(grp));
 
   /* run control */
@@ -252,6 +440,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
     if (!mod->checkpoint_read) continue;
     PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
     io.owner = owner;
+    PetscCall(PetscSNPrintf(io.where, sizeof(io.where), "modules/%s", mod->name));
     PetscCall(checkpoint_open_group(path, fid, "modules", "module state", &modules));
     PetscCall(checkpoint_open_group(path, modules, mod->name, owner, &io.group));
     PetscCall(mod->checkpoint_read(mod, s, &io));
@@ -260,6 +449,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   }
   if (s->scn->checkpoint_read) {
     io.owner = "the scene";
+    PetscCall(PetscStrncpy(io.where, "scene", sizeof(io.where)));
     PetscCall(checkpoint_open_group(path, fid, "scene", "scene state", &io.group));
     PetscCall(s->scn->checkpoint_read(s->scn, s, &io));
     PetscCallHDF5(path, H5Gclose(io.group));

@@ -8,12 +8,16 @@
  *
  * run.json (rank 0, rewritten atomically): dmhs_version, scene, ranks,
  * options, restart_from, start, end (ISO 8601 UTC), status ("running",
- * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message. */
+ * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message,
+ * previous_status (the status in the run.json this run replaced: "running"
+ * there means that run was killed, or is still going). */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 #include "dmhs/sim.h"
 #include "dmhs/io.h"
 #include "dmhs/checkpoint.h"
@@ -22,6 +26,7 @@
 #include "dmhs/migrate.h"
 #include "dmhs/integrate.h"
 #include "h5check.h"
+#include "outdir.h"
 
 static volatile sig_atomic_t io_signal_received = 0;
 
@@ -48,6 +53,11 @@ PetscErrorCode io_set_from_options(sim *s) {
                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
   PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint file (same scene and options)", NULL,
                                io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
+  PetscCall(PetscOptionsBool(
+      "-restart_allow_change",
+      "Let -restart continue with physics options that differ from the checkpoint's "
+      "(listed in run.json)",
+      NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
   PetscOptionsEnd();
   PetscCheck(io->checkpoint_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-checkpoint_interval must be >= 0 (got %g; 0 = never)", io->checkpoint_interval);
@@ -73,14 +83,45 @@ static void io_json_string(FILE *f, const char *v) {
   fputc('"', f);
 }
 
+/* Writes text to path through path.tmp and a rename; when that fails (disk
+ * full: no room for a second copy) the old file is overwritten in place, its
+ * blocks already allocated, padded with blanks to its old length. 0 or an errno. */
+static int io_replace_file(const char *path, const char *text) {
+  char tmp[PETSC_MAX_PATH_LEN + 24];
+  const size_t len = strlen(text);
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  FILE *f = fopen(tmp, "w");
+  int failed = !f;
+  if (f) {
+    failed = fwrite(text, 1, len, f) != len;
+    failed = fclose(f) != 0 || failed;
+  }
+  if (!failed && !rename(tmp, path))
+    return 0;
+  const int err = errno ? errno : EIO;
+  unlink(tmp);
+  f = fopen(path, "r+");
+  if (!f)
+    return err;
+  fseek(f, 0, SEEK_END);
+  const long old = ftell(f);
+  rewind(f);
+  failed = fwrite(text, 1, len, f) != len;
+  for (long k = (long)len; k < old && !failed; k++)
+    failed = fputc(' ', f) == EOF;
+  failed = fclose(f) != 0 || failed;
+  return failed ? err : 0;
+}
+
 /* Plain C (no PETSc calls): also used on the error path. Returns 0 or an errno. */
 static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
-  char path[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 24], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16];
+  char path[PETSC_MAX_PATH_LEN + 16], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
+  size_t text_len = 0;
   snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
   snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
-  FILE *f = fopen(tmp, "w");
-  if (!f) return errno ? errno : EIO;
+  FILE *f = open_memstream(&text, &text_len);
+  if (!f)
+    return errno ? errno : ENOMEM;
   fprintf(f, "{\n  \"dmhs_version\": ");
   io_json_string(f, DMHS_VERSION);
   fprintf(f, ",\n  \"scene\": ");
@@ -90,6 +131,19 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   fprintf(f, ",\n  \"restart_from\": ");
   if (s->io.restart_file[0]) io_json_string(f, s->io.restart_file);
   else fprintf(f, "null");
+  if (s->io.restart_file[0]) {
+    fprintf(f, ",\n  \"restart_allow_change\": %s,\n  \"restart_changes\": ",
+            s->io.restart_allow_change ? "true" : "false");
+    if (s->io.restart_changes)
+      io_json_string(f, s->io.restart_changes);
+    else
+      fprintf(f, "null");
+  }
+  fprintf(f, ",\n  \"previous_status\": ");
+  if (s->io.previous_status[0])
+    io_json_string(f, s->io.previous_status);
+  else
+    fprintf(f, "null");
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io.start_time);
   fprintf(f, ",\n  \"end\": ");
@@ -108,8 +162,9 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   }
   int failed = fprintf(f, "\n}\n") < 0;
   failed = fclose(f) != 0 || failed;
-  if (failed) return EIO;
-  return rename(tmp, path) ? errno : 0;
+  const int err = failed ? ENOMEM : io_replace_file(path, text);
+  free(text);
+  return err;
 }
 
 static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
@@ -124,10 +179,29 @@ static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
 
 void io_record_error(sim *s, const char *message) {
   if (!s || s->rank != 0 || !s->io.run_json_started) return;
+  /* a write the error interrupted (disk full) leaves its temporary file */
+  (void)outdir_remove_tmp(s->output_dir);
   (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr", 1);
 }
 
 /* ---- setup, restart ------------------------------------------------------ */
+
+/* The "status" of an existing <dir>/run.json, or "" (plain C). */
+static void io_previous_status(const char *dir, char *status, size_t len) {
+  char path[PETSC_MAX_PATH_LEN + 16], text[8192];
+  const char *key = "\"status\": \"";
+  status[0] = 0;
+  snprintf(path, sizeof(path), "%s/run.json", dir);
+  FILE *f = fopen(path, "r");
+  if (!f)
+    return;
+  const size_t n = fread(text, 1, sizeof(text) - 1, f);
+  fclose(f);
+  text[n] = 0;
+  const char *at = strstr(text, key), *end = at ? strchr(at + strlen(key), '"') : NULL;
+  if (at && end && (size_t)(end - at - strlen(key)) < len)
+    snprintf(status, len, "%.*s", (int)(end - at - strlen(key)), at + strlen(key));
+}
 
 PetscErrorCode io_setup(sim *s) {
   io_state *io = &s->io;
@@ -136,6 +210,18 @@ PetscErrorCode io_setup(sim *s) {
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
   io_now_iso(io->start_time, sizeof(io->start_time));
+  if (s->rank == 0)
+    io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
+  if (s->rank == 0) {
+    /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
+    const int n_tmp = outdir_remove_tmp(s->output_dir);
+    const int n_snap = io->restart_file[0] ? 0 : outdir_remove_snapshots(s->output_dir, 0);
+    if (n_tmp || n_snap)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "output directory %s: removed %d unfinished .tmp file(s) and %d "
+                            "snapshot/index file(s) of an earlier run\n",
+                            s->output_dir, n_tmp, n_snap));
+  }
   PetscCall(io_run_json(s, "running", PETSC_FALSE));
   io->run_json_started = PETSC_TRUE;
   if (s->rank == 0) PetscCall(xdmf_create(&io->xdmf));
@@ -154,12 +240,32 @@ PetscErrorCode io_restart(sim *s) {
   if (io->restart_file[0]) {
     const double dt_options = s->dt;
     PetscCall(checkpoint_read(s, io->restart_file));
+    PetscCheck(
+        s->t_end > s->t + 0.5 * s->dt, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+        "-t_end %g s is not after the time of the checkpoint %s (t = %.9g s, step %" PetscInt_FMT
+        "): nothing to run; give a later -t_end",
+        s->t_end, io->restart_file, s->t, s->step);
+    if (io->restart_changes && s->rank == 0) {
+      /* run.json ("running") records what changed from the start */
+      const int err = io_write_run_json(s, "running", NULL, 0);
+      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
+                 s->output_dir, strerror(err));
+    }
     PetscCall(sim_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
     PetscCall(PetscPrintf(s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
                           io->restart_file, s->step, s->t, s->dt,
                           s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
+    if (s->rank == 0) {
+      /* the snapshots the interrupted run wrote after its checkpoint are written again */
+      const int n = outdir_remove_snapshots(s->output_dir, (long)io->snapshot_index);
+      if (n)
+        PetscCall(PetscPrintf(
+            PETSC_COMM_SELF,
+            "output directory %s: removed %d snapshot file(s) written after the checkpoint\n",
+            s->output_dir, n));
+    }
     if (s->rank == 0 && io->snapshots) {
       /* index the snapshots the interrupted run had written before the checkpoint */
       PetscCall(xdmf_scan(io->xdmf, s->output_dir, io->snapshot_index));
@@ -239,6 +345,7 @@ PetscErrorCode io_finish(sim *s) {
 PetscErrorCode io_destroy(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(s->io.options));
+  PetscCall(PetscFree(s->io.restart_changes));
   PetscCall(xdmf_destroy(&s->io.xdmf));
   PetscFunctionReturn(0);
 }

@@ -22,7 +22,9 @@ PetscErrorCode progress_print(sim *s) {
   const double rate = particle_steps_per_second(s, elapsed);
   /* since this session's start (a restart begins at t > 0) */
   const double done = s->t - s->io.restart_t;
-  const double eta = done > 0 ? elapsed * (s->t_end - s->t) / done : 0.0;
+  /* the last step may pass t_end by up to dt/2: nothing is left then (not "-0.0 s") */
+  const double left = s->t_end - s->t > 0 ? s->t_end - s->t : 0.0;
+  const double eta = done > 0 ? elapsed * left / done : 0.0;
   PetscCall(PetscPrintf(s->comm,
                         "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",

@@ -7,6 +7,7 @@
 #include "dmhs/events.h"
 #include "h5check.h"
 #include "h5io.h"
+#include "guard.h"
 
 int snapshot_file_width(const field_desc *f) { return f->width == DMHS_DIM && DMHS_DIM == 2 ? 3 : f->width; }
 
@@ -69,6 +70,7 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
 
+  PetscCall(io_guard_finite(s, FIELD_OUTPUT, path));
   PetscCall(h5io_create(s->comm, tmp, &fid));
   {
     const double time = s->t, dt = s->dt;

@@ -8,7 +8,8 @@
  *   ws = (pi/2) sqrt(kGA/(mu L^2)).
  * Output: <output_dir>/cantilever.csv, one row per output interval:
  *   t, tip_dx, tip_dy (mean displacement of the tip column [m]), kinetic and
- *   potential energy [J]; header lines '# key = value' give the beam constants. */
+ *   potential energy [J]; header lines '# key = value' give the beam constants.
+ *   A restart continues the file (csv.h). */
 #include <math.h>
 #include <errno.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/solid_load.h"
+#include "dmhs/csv.h"
 #include "solid_strip.h"
 
 typedef struct {
@@ -62,23 +64,28 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode cantilever_write_header(cantilever_data *c, sim *s, double k_s) {
-  char path[PETSC_MAX_PATH_LEN];
+/* cantilever.csv with its '# key = value' header (csv.h: a restart continues it) */
+static PetscErrorCode cantilever_open_csv(cantilever_data *c, sim *s) {
+  char header[1024];
+  bond_style style;
+  const bond_params *bp;
+  double F[2], ka, th0;
   PetscFunctionBeginUser;
   if (s->rank) PetscFunctionReturn(0);
-  PetscCall(sim_output_path(s, "cantilever.csv", path, sizeof(path)));
-  c->csv = fopen(path, "w");
-  PetscCheck(c->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
-  double ka, th0;
+  PetscCall(bond_get_params(s, &style, &bp));
+  const double k_s =
+      style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
+  PetscCall(solid_load_get_force(c->load, F));
+  c->F = -F[1]; /* downward tip load */
   PetscCall(angle_get_params(s, &ka, &th0));
-  const int ok = fprintf(c->csv,
-                         "# cantilever: two-layer mass-spring strip (doc/theory.md)\n"
-                         "# n = %d\n# n_clamp = %d\n# r0 = %.10g\n# mass = %.10g\n# k_s = %.10g\n# k_a = %.10g\n"
-                         "# L = %.10g\n# EI = %.10g\n# kGA = %.10g\n# mu = %.10g\n# F = %.10g\n# dt = %.10g\n"
-                         "t,tip_dx,tip_dy,kinetic,potential\n",
-                         (int)c->st.n, (int)c->st.n_clamp, c->st.spacing, c->st.mass, k_s, ka, c->L, c->EI, c->kGA,
-                         c->mu, c->F, s->dt) > 0;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
+  snprintf(header, sizeof(header),
+           "# cantilever: two-layer mass-spring strip (doc/theory.md)\n"
+           "# n = %d\n# n_clamp = %d\n# r0 = %.10g\n# mass = %.10g\n# k_s = %.10g\n# k_a = %.10g\n"
+           "# L = %.10g\n# EI = %.10g\n# kGA = %.10g\n# mu = %.10g\n# F = %.10g\n# dt = %.10g\n"
+           "t,tip_dx,tip_dy,kinetic,potential\n",
+           (int)c->st.n, (int)c->st.n_clamp, c->st.spacing, c->st.mass, k_s, ka, c->L, c->EI,
+           c->kGA, c->mu, c->F, s->dt);
+  PetscCall(csv_open(s, "cantilever.csv", header, &c->csv));
   PetscFunctionReturn(0);
 }
 
@@ -150,23 +157,16 @@ static PetscErrorCode cantilever_diagnose(scene *self, sim *s) {
   cantilever_data *c = self->data;
   double d[2], kin = 0, pot = 0;
   PetscFunctionBeginUser;
-  if (s->step == 0) {
-    bond_style style;
-    const bond_params *bp;
-    PetscCall(bond_get_params(s, &style, &bp));
-    const double k_s = style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
-    double F[2];
-    PetscCall(solid_load_get_force(c->load, F));
-    c->F = -F[1]; /* downward tip load */
-    PetscCall(cantilever_write_header(c, s, k_s));
-  } else if (s->t < s->next_output_t - 0.5 * s->dt)
+  /* rows at step 0 and at output times */
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
     PetscFunctionReturn(0);
+  if (!c->csv)
+    PetscCall(cantilever_open_csv(c, s));
   PetscCall(cantilever_tip(s, d));
   PetscCall(cantilever_energies(s, &kin, &pot));
-  if (c->csv) {
-    PetscCheck(fprintf(c->csv, "%.10g,%.10g,%.10g,%.10g,%.10g\n", s->t, d[0], d[1], kin, pot) > 0, PETSC_COMM_SELF,
-               PETSC_ERR_FILE_WRITE, "cannot write cantilever.csv");
-  }
+  if (c->csv)
+    PetscCall(csv_row(c->csv, "cantilever.csv", "%.10g,%.10g,%.10g,%.10g,%.10g\n", s->t, d[0], d[1],
+                      kin, pot));
   PetscFunctionReturn(0);
 }
 
@@ -179,8 +179,7 @@ static PetscErrorCode cantilever_finish(scene *self, sim *s) {
                         "cantilever: L = %g m, EI = %g N m^2, kGA = %g N; final tip displacement (%g, %g) m; see "
                         "cantilever.csv and test/validation/cantilever.py\n",
                         c->L, c->EI, c->kGA, d[0], d[1]));
-  if (c->csv) fclose(c->csv);
-  c->csv = NULL;
+  PetscCall(csv_close(&c->csv, "cantilever.csv"));
   PetscFunctionReturn(0);
 }
 

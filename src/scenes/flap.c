@@ -11,9 +11,13 @@
  *   slip (the liquid's velocity extrapolated onto the flap's faces, relative
  *   to the flap, over the largest fluid speed: see flap_slip), near (the first
  *   fluid layer's speed relative to the flap, same scale), u_max [m/s];
- * and at the end <output_dir>/flap-particles.csv (x, y, vx, vy, type) for plots. */
+ * and at the end <output_dir>/flap-particles.csv (x, y, vx, vy, type, rows in
+ * gid order whatever the rank count) for plots.
+ * A restart continues flap.csv (csv.h); the crossing counter's state (count
+ * and side of every fluid gid) travels in the checkpoint. */
 #include <math.h>
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/gather.h"
@@ -23,6 +27,8 @@
 #include "dmhs/repulsion.h"
 #include "dmhs/body_force.h"
 #include "dmhs/solid_load.h"
+#include "dmhs/checkpoint.h"
+#include "dmhs/csv.h"
 #include "solid_strip.h"
 
 typedef struct {
@@ -305,16 +311,16 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCall(flap_gather_strip(f, s));
   PetscCall(flap_count_crossings(f, s));
-  if (s->step == 0 && s->rank == 0) { /* mpi: rank 0 writes */
-    char path[PETSC_MAX_PATH_LEN];
-    PetscCall(sim_output_path(s, "flap.csv", path, sizeof(path)));
-    f->csv = fopen(path, "w");
-    PetscCheck(f->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
-    PetscCheck(fprintf(f->csv, "# flap: height %g m, dx %g m\nt,tip_dx,tip_dy,crossings,slip,near,u_max\n",
-                       f->flap_rows * f->dx, f->dx) > 0,
-               PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
-  } else if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
+  /* rows at step 0 and at output times; a restarted run continues the file */
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
     PetscFunctionReturn(0);
+  if (s->rank == 0 && !f->csv) { /* mpi: rank 0 writes */
+    char header[160];
+    snprintf(header, sizeof(header),
+             "# flap: height %g m, dx %g m\nt,tip_dx,tip_dy,crossings,slip,near,u_max\n",
+             f->flap_rows * f->dx, f->dx);
+    PetscCall(csv_open(s, "flap.csv", header, &f->csv));
+  }
   PetscCall(flap_tip(f, tip));
   PetscCall(flap_slip(f, s, &slip, &near, &umax));
   if (s->rank == 0) { /* mpi: rank 0 writes */
@@ -322,11 +328,50 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
     char slip_s[32] = "", near_s[32] = "";
     if (isfinite(slip)) snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
     if (isfinite(near)) snprintf(near_s, sizeof(near_s), "%.6g", near);
-    PetscCheck(fprintf(f->csv, "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t, tip[0], tip[1], f->crossings,
-                       slip_s, near_s, umax) > 0,
-               PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write flap.csv");
+    PetscCall(csv_row(f->csv, "flap.csv", "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t,
+                      tip[0], tip[1], f->crossings, slip_s, near_s, umax));
   }
   PetscFunctionReturn(0);
+}
+
+/* The crossing counter's state: the count and the side of every fluid gid
+ * (a particle that changes side between the checkpoint and the next step
+ * must count as it would have without the restart). Replicated on every rank. */
+static PetscErrorCode flap_checkpoint_write(scene *self, sim *s, struct checkpoint_io *io) {
+  flap_data *f = self->data;
+  const PetscInt64 crossings = f->crossings;
+  PetscInt64 *side;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(PetscMalloc1(f->n_fluid + 1, &side));
+  for (PetscInt g = 0; g < f->n_fluid; g++)
+    side[g] = f->side[g];
+  PetscCall(checkpoint_put_ints(io, "flap_crossings", &crossings, 1));
+  PetscCall(checkpoint_put_ints(io, "flap_side", side, f->n_fluid));
+  PetscCall(PetscFree(side));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode flap_checkpoint_read(scene *self, sim *s, struct checkpoint_io *io) {
+  flap_data *f = self->data;
+  PetscInt64 crossings, *side;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(PetscMalloc1(f->n_fluid + 1, &side));
+  PetscCall(checkpoint_get_ints(io, "flap_crossings", &crossings, 1));
+  PetscCall(checkpoint_get_ints(io, "flap_side", side, f->n_fluid));
+  f->crossings = (PetscInt)crossings;
+  for (PetscInt g = 0; g < f->n_fluid; g++)
+    f->side[g] = (signed char)side[g];
+  PetscCall(PetscFree(side));
+  PetscFunctionReturn(0);
+}
+
+#define FLAP_ROW 6 /* gid, x, y, vx, vy, type */
+
+static int flap_compare_gid(const void *a, const void *b) {
+  const double ga = ((const double *)a)[0], gb = ((const double *)b)[0];
+  return (ga > gb) - (ga < gb);
 }
 
 static PetscErrorCode flap_finish(scene *self, sim *s) {
@@ -342,32 +387,34 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
                         "flap: tip displacement (%g, %g) m (%.3g of the height), fluid crossings %" PetscInt_FMT
                         ", slip on the faces |u(d=0) - v_flap|/u_max = %.3g (first fluid layer %.3g), u_max = %g m/s\n",
                         tip[0], tip[1], tip[0] / (f->flap_rows * f->dx), f->crossings, slip, near, umax));
-  if (f->csv) fclose(f->csv);
-  f->csv = NULL;
-  /* mpi: rows of every rank gathered to rank 0 (rank order) */
-  const size_t n_mine = 5 * (size_t)ps->n_owned;
+  PetscCall(csv_close(&f->csv, "flap.csv"));
+  /* mpi: rows of every rank gathered to rank 0 and sorted by gid (independent of the rank count) */
+  const size_t n_mine = FLAP_ROW * (size_t)ps->n_owned;
   size_t n_all;
   double *mine, *all = NULL;
   PetscCall(PetscMalloc1(n_mine + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    double *r = mine + 5 * i;
-    r[0] = ps->x[i][0];
-    r[1] = ps->x[i][1];
-    r[2] = ps->v[i][0];
-    r[3] = ps->v[i][1];
-    r[4] = (double)ps->type[i];
+    double *r = mine + FLAP_ROW * i;
+    r[0] = (double)ps->gid[i]; /* exact below 2^53 */
+    r[1] = ps->x[i][0];
+    r[2] = ps->x[i][1];
+    r[3] = ps->v[i][0];
+    r[4] = ps->v[i][1];
+    r[5] = (double)ps->type[i];
   }
   PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &n_all));
   PetscCall(PetscFree(mine));
   if (s->rank == 0) {
+    qsort(all, n_all / FLAP_ROW, FLAP_ROW * sizeof(double), flap_compare_gid);
     PetscCall(sim_output_path(s, "flap-particles.csv", path, sizeof(path)));
     FILE *out = fopen(path, "w");
     PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
     int ok = fprintf(out, "x,y,vx,vy,type\n") > 0;
-    for (size_t k = 0; k < n_all && ok; k += 5)
-      ok = fprintf(out, "%.6g,%.6g,%.6g,%.6g,%d\n", all[k], all[k + 1], all[k + 2], all[k + 3], (int)all[k + 4]) > 0;
-    fclose(out);
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path);
+    for (size_t k = 0; k < n_all && ok; k += FLAP_ROW)
+      ok = fprintf(out, "%.6g,%.6g,%.6g,%.6g,%d\n", all[k + 1], all[k + 2], all[k + 3], all[k + 4],
+                   (int)all[k + 5]) > 0;
+    ok = fclose(out) == 0 && ok;
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s (disk full?)", path);
     PetscCall(PetscFree(all));
   }
   PetscFunctionReturn(0);
@@ -400,6 +447,8 @@ PetscErrorCode flap_scene_create(scene **out) {
   (*out)->diagnose = flap_diagnose;
   (*out)->finish = flap_finish;
   (*out)->destroy = flap_destroy;
+  (*out)->checkpoint_write = flap_checkpoint_write;
+  (*out)->checkpoint_read = flap_checkpoint_read;
   (*out)->data = f;
   PetscFunctionReturn(0);
 }

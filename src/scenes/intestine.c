@@ -42,6 +42,7 @@
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"
 #include "dmhs/checkpoint.h"
+#include "dmhs/csv.h"
 
 #define TAG_WHITE 1
 #define TAG_RED 2
@@ -297,6 +298,40 @@ static PetscErrorCode intestine_fluid_counts(intestine_data *c, sim *s, PetscInt
   PetscFunctionReturn(0);
 }
 
+/* intestine.csv and its header (csv.h: a restart keeps the rows up to the checkpoint) */
+static PetscErrorCode intestine_open_csv(intestine_data *c, sim *s, double tw, double Tw) {
+  const PetscInt np = c->n_pockets;
+  const size_t len = 512 + 32 * (size_t)(4 * np + 8);
+  size_t at = 0;
+  char *h;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(len, &h));
+#define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, at < len ? len - at : 0, __VA_ARGS__)
+  INTESTINE_HEADER("# intestine: %" PetscInt_FMT
+                   " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
+                   "t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
+                   np, c->b, c->dx, c->level, c->amplitude, tw, Tw, c->n_fluid);
+  INTESTINE_HEADER("t,sub,x_F");
+  for (PetscInt k = 0; k <= np; k++)
+    INTESTINE_HEADER(",white_%" PetscInt_FMT, k);
+  INTESTINE_HEADER(",alpha");
+  if (c->red)
+    for (PetscInt k = 0; k <= np; k++)
+      INTESTINE_HEADER(",red_%" PetscInt_FMT, k);
+  INTESTINE_HEADER(",overflow,fluid");
+  for (PetscInt k = 0; k < np; k++)
+    INTESTINE_HEADER(",lift_%" PetscInt_FMT, k);
+  for (PetscInt k = 0; k < np; k++)
+    INTESTINE_HEADER(",s_%" PetscInt_FMT, k);
+  INTESTINE_HEADER("\n");
+#undef INTESTINE_HEADER
+  PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "intestine.csv header longer than %zu bytes", len);
+  PetscCall(csv_open(s, "intestine.csv", h, &c->csv));
+  PetscCall(PetscFree(h));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   intestine_data *c = self->data;
   const PetscInt np = c->n_pockets;
@@ -305,7 +340,7 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCall(intestine_park(c, s));
   PetscCall(peristalsis_get(c->peri, &tw, &Tw, NULL, NULL, &delay));
-  /* rows at step 0 and at output times; a restarted run appends to the CSV from its next output */
+  /* rows at step 0 and at output times; a restarted run continues the CSV (csv.h) */
   if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
   PetscCall(PetscCalloc2(np + 1, &cw, np + 1, &cr));
   PetscCall(tracking_count(s, TAG_WHITE, np, c->b, 0.0, cw, &nw, &xw));
@@ -340,38 +375,31 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   }
   if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt) c->alpha_T = alpha;
   if (s->rank == 0) { /* mpi: rank 0 writes */
-    if (!c->csv) {
-      char path[PETSC_MAX_PATH_LEN];
-      PetscCall(sim_output_path(s, "intestine.csv", path, sizeof(path)));
-      c->csv = fopen(path, s->io.restarted ? "a" : "w");
-      PetscCheck(c->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
-      if (!s->io.restarted) {
-        fprintf(c->csv, "# intestine: %" PetscInt_FMT " pockets, b %g m, dx %g m, level %g m, amplitude %g m, t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
-                np, c->b, c->dx, c->level, c->amplitude, tw, Tw, c->n_fluid);
-        fprintf(c->csv, "t,sub,x_F");
-        for (PetscInt k = 0; k <= np; k++) fprintf(c->csv, ",white_%" PetscInt_FMT, k);
-        fprintf(c->csv, ",alpha");
-        if (c->red)
-          for (PetscInt k = 0; k <= np; k++) fprintf(c->csv, ",red_%" PetscInt_FMT, k);
-        fprintf(c->csv, ",overflow,fluid");
-        for (PetscInt k = 0; k < np; k++) fprintf(c->csv, ",lift_%" PetscInt_FMT, k);
-        for (PetscInt k = 0; k < np; k++) fprintf(c->csv, ",s_%" PetscInt_FMT, k);
-        fprintf(c->csv, "\n");
-      }
-    }
-    {
-      int ok = fprintf(c->csv, "%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw) > 0;
-      for (PetscInt k = 0; k <= np; k++) ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT, cw[k]) > 0;
-      ok = ok && fprintf(c->csv, ",%.8g", alpha) > 0;
-      if (c->red)
-        for (PetscInt k = 0; k <= np; k++) ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT, cr[k]) > 0;
-      ok = ok && fprintf(c->csv, ",%" PetscInt64_FMT ",%" PetscInt64_FMT, parked, fluid) > 0;
-      for (PetscInt k = 0; k < np; k++) ok = ok && fprintf(c->csv, ",%.8g", lift[k]) > 0;
-      for (PetscInt k = 0; k < np; k++) ok = ok && fprintf(c->csv, ",%d", peristalsis_value(c->peri, s->t, k)) > 0;
-      ok = ok && fprintf(c->csv, "\n") > 0;
-      PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write intestine.csv");
-      fflush(c->csv);
-    }
+    if (!c->csv)
+      PetscCall(intestine_open_csv(c, s, tw, Tw));
+    const size_t len = 64 + 32 * (size_t)(4 * np + 8);
+    size_t at = 0;
+    char *row;
+    PetscCall(PetscMalloc1(len, &row));
+#define INTESTINE_ROW(...) at += (size_t)snprintf(row + at, at < len ? len - at : 0, __VA_ARGS__)
+    INTESTINE_ROW("%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw);
+    for (PetscInt k = 0; k <= np; k++)
+      INTESTINE_ROW(",%" PetscInt64_FMT, cw[k]);
+    INTESTINE_ROW(",%.8g", alpha);
+    if (c->red)
+      for (PetscInt k = 0; k <= np; k++)
+        INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
+    INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT, parked, fluid);
+    for (PetscInt k = 0; k < np; k++)
+      INTESTINE_ROW(",%.8g", lift[k]);
+    for (PetscInt k = 0; k < np; k++)
+      INTESTINE_ROW(",%d", peristalsis_value(c->peri, s->t, k));
+    INTESTINE_ROW("\n");
+#undef INTESTINE_ROW
+    PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes",
+               len);
+    PetscCall(csv_line(c->csv, "intestine.csv", row));
+    PetscCall(PetscFree(row));
   }
   PetscCall(PetscFree(lift));
   PetscCall(PetscFree2(cw, cr));
@@ -411,8 +439,7 @@ static PetscErrorCode intestine_finish(scene *self, sim *s) {
                         "intestine: h = %g m (%s), Re = b u_F/nu = %g, Ga = h^3 g/nu^2 = %g, Fr = V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
                         h, measured ? "largest measured segment lift" : "configured amplitude A: no lift above dx measured",
                         c->b * uF / nu, h * h * h * g / (nu * nu), Vw / sqrt(g * h), h / c->level));
-  if (c->csv) fclose(c->csv);
-  c->csv = NULL;
+  PetscCall(csv_close(&c->csv, "intestine.csv"));
   PetscFunctionReturn(0);
 }
 

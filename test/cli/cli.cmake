@@ -7,7 +7,10 @@ set(QUICK -options_file ${DMHS_INPUT}/poiseuille-quick.opts -quiet)
 
 add_test(NAME cli_help COMMAND ${DMHS_EXE} -help)
 set_tests_properties(cli_help PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "-scene <now poiseuille.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
+  PASS_REGULAR_EXPRESSION "-scene <poiseuille>.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
+# each option once, with the chosen scene's values (test/cli/help.sh)
+add_test(NAME cli_help_scene_values COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/help.sh ${DMHS_EXE} ${DMHS_INPUT})
+set_tests_properties(cli_help_scene_values PROPERTIES LABELS cli TIMEOUT 60)
 
 function(dmhs_cli_fail name regex)
   add_test(NAME ${name} COMMAND ${DMHS_EXPECT_FAIL} "${regex}" -- ${DMHS_EXE} ${ARGN})
@@ -23,7 +26,35 @@ dmhs_cli_fail(cli_bad_value "-sph_h must be > 0" ${QUICK} -sph_h -1 -output_dir 
 dmhs_cli_fail(cli_bad_enum "sph_kernel" ${QUICK} -sph_kernel gauss -output_dir ${DMHS_CLI_OUT}/d)
 dmhs_cli_fail(cli_non_square_lattice "lattice must be square" ${QUICK} -channel_nx 30 -output_dir ${DMHS_CLI_OUT}/e)
 dmhs_cli_fail(cli_unwritable_output_dir "-output_dir /proc/dmhs" ${QUICK} -output_dir /proc/dmhs/out)
-dmhs_cli_fail(cli_missing_options_file "options_file|Unable to open" -options_file ${DMHS_INPUT}/no-such-case.opts)
+# errors while PETSc reads the options files are one line too (the handler is in place before PetscInitialize)
+add_test(NAME cli_missing_options_file COMMAND ${DMHS_EXPECT_FAIL}
+  "^dmhs: error: Unable to open options file .*no-such-case.opts" --lines 2 --
+  ${DMHS_EXE} -options_file ${DMHS_INPUT}/no-such-case.opts)
+set_tests_properties(cli_missing_options_file PROPERTIES LABELS cli TIMEOUT 60)
+# Values validated where they are read (include/dmhs/options.h): one line naming the option, the
+# value and what it takes
+add_test(NAME cli_bad_options_file COMMAND ${DMHS_EXPECT_FAIL}
+  "^dmhs: error: Unknown first token in options file .*bad-options.opts line 3: channel_nx" --lines 2 --
+  ${DMHS_EXE} -options_file ${CMAKE_CURRENT_LIST_DIR}/bad-options.opts)
+set_tests_properties(cli_bad_options_file PROPERTIES LABELS cli TIMEOUT 60)
+foreach(case "t_end;inf" "dt;inf" "sph_c0;inf" "sph_nu;nan" "sph_h;-inf" "gravity;1e999")
+  list(GET case 0 opt)
+  list(GET case 1 value)
+  dmhs_cli_fail(cli_nonfinite_${opt} "-${opt} ${value}: not finite; -${opt} takes a finite real number"
+    ${QUICK} -${opt} ${value} -output_dir ${DMHS_CLI_OUT}/nonfinite)
+endforeach()
+dmhs_cli_fail(cli_body_force_components "-body_force 1e-4,0,0: 3 values, but -body_force takes up to 2"
+  ${QUICK} -body_force 1e-4,0,0 -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_array_element "-body_force 1e-4,x: 'x' is not a number" ${QUICK} -body_force 1e-4,x
+  -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_real "-dt garbage: not a number; -dt takes a finite real number"
+  ${QUICK} -dt garbage -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_int "-channel_nx 2.5: not an integer" ${QUICK} -channel_nx 2.5 -output_dir ${DMHS_CLI_OUT}/k)
+dmhs_cli_fail(cli_garbage_bool "-quiet maybe: not a boolean" ${QUICK} -quiet maybe -output_dir ${DMHS_CLI_OUT}/k)
+# an option last on the line without its value (-dt alone used to mean -dt 0, automatic)
+dmhs_cli_fail(cli_missing_value "option -dt was given without a value; it takes a finite real number"
+  ${QUICK} -output_dir ${DMHS_CLI_OUT}/k -dt)
+dmhs_cli_fail(cli_missing_string "option -output_dir was given without a value" ${QUICK} -output_dir)
 # the published dt = 1e-4 s exceeds the viscous limit at 40 x 80: refused before step 0
 dmhs_cli_fail(cli_preflight_published_dt "viscosity .*EXCEEDED.*pre-flight check failed"
   -options_file ${DMHS_INPUT}/poiseuille.opts -dt 1e-4 -output_dir ${DMHS_CLI_OUT}/f)
@@ -36,6 +67,13 @@ add_test(NAME cli_blowup_stops_cleanly COMMAND ${DMHS_EXPECT_FAIL}
   --no-nan ${DMHS_CLI_OUT}/blowup --
   ${DMHS_EXE} ${QUICK} -dt 2e-3 -preflight warn -t_end 0.5 -output_interval 0.002 -output_dir ${DMHS_CLI_OUT}/blowup)
 set_tests_properties(cli_blowup_stops_cleanly PROPERTIES LABELS cli TIMEOUT 60)
+# finite positions and velocities but a non-finite acceleration at t = 0 (gravity 1e300 overflows the
+# wall pressure): stopped before snap_000000.h5, naming step, particle and field
+add_test(NAME cli_nonfinite_acceleration_stops COMMAND ${DMHS_EXPECT_FAIL}
+  "run blew up at step 0, t = 0.* particle gid [0-9]+ .*non-finite or invalid acceleration"
+  --no-nan ${DMHS_CLI_OUT}/gravity --
+  ${DMHS_EXE} ${QUICK} -gravity 1e300 -preflight warn -t_end 0.01 -output_dir ${DMHS_CLI_OUT}/gravity)
+set_tests_properties(cli_nonfinite_acceleration_stops PROPERTIES LABELS cli TIMEOUT 60)
 
 add_test(NAME cli_log_view COMMAND ${DMHS_EXE} ${QUICK} -t_end 0.01 -log_view -output_dir ${DMHS_CLI_OUT}/h)
 set_tests_properties(cli_log_view PROPERTIES LABELS cli
@@ -56,3 +94,14 @@ dmhs_cli_fail(cli_pulsatile_without_drive "-body_force_period 0.206 s the drive 
 add_test(NAME cli_vein_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_study.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
   ${DMHS_CLI_OUT}/vein-study)
 set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
+# the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
+add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
+  -t_end 0.0101 -output_snapshots false -output_dir ${DMHS_CLI_OUT}/eta)
+set_tests_properties(cli_eta_not_negative PROPERTIES LABELS cli TIMEOUT 60 FAIL_REGULAR_EXPRESSION "ETA +-"
+  PASS_REGULAR_EXPRESSION "step +337 .* ETA +0.0 s")
+# out of memory (a 1 GB address-space limit, 4e8 particles): says what and how much
+add_test(NAME cli_out_of_memory COMMAND ${DMHS_EXPECT_FAIL}
+  "out of memory: cannot allocate 3200 MB for particle field 'gid' \\(room for 400000000 particles.*160 bytes per particle"
+  -- bash -c "ulimit -v 1000000 && exec \"$0\" \"$@\"" ${DMHS_EXE} -scene box -box_nx 20000 -box_ny 20000
+  -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/oom)
+set_tests_properties(cli_out_of_memory PROPERTIES LABELS cli TIMEOUT 60)

@@ -1,6 +1,6 @@
 #!/bin/bash
-# Bad input: truncated, foreign, wrong-version, incomplete and mismatched
-# checkpoints, a missing one, an output directory that cannot be created, and a
+# Bad input: truncated, foreign, wrong-version, incomplete, mismatched,
+# bit-flipped (checksums) and duplicated-gid checkpoints, a missing one, an output directory that cannot be created, and a
 # checkpoint write that fails. Each must stop with exit status 1 (no crash) and
 # a message naming the file; a failed checkpoint write leaves the previous
 # checkpoint intact.
@@ -53,8 +53,35 @@ import h5py
 f = h5py.File('$W/rows.h5', 'r+'); v = f['particles/v'][()]; del f['particles/v']; f['particles/v'] = v[:200]"
 expect_fail rows "dataset v in $W/rows.h5 is 200 x 2" -output_dir "$W/o9" -restart "$W/rows.h5"
 
-expect_fail options "holds 260 particles but scene 'poiseuille' built 312" -output_dir "$W/o10" -restart "$GOOD" \
-  -channel_nx 12 -channel_length 6e-4
+expect_fail options "-channel_length 0.0005 in the checkpoint, 0.0006 now; -channel_nx 10 in the checkpoint, 12 now" \
+  -output_dir "$W/o10" -restart "$GOOD" -channel_nx 12 -channel_length 6e-4
+expect_fail options_allowed "holds 260 particles but scene 'poiseuille' built 312" -output_dir "$W/o10" \
+  -restart "$GOOD" -channel_nx 12 -channel_length 6e-4 -restart_allow_change
+
+# flipped bytes in the raw data (HDF5 itself does not notice): each dataset's checksum does
+flip() { # FILE DATASET: xor one byte in the middle of the dataset's storage
+  "$PY" - "$1" "$2" << 'PYEOF'
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as f:
+    d = f[sys.argv[2]]
+    at = d.id.get_offset() + d.id.get_storage_size() // 2
+with open(sys.argv[1], "r+b") as raw:
+    raw.seek(at)
+    b = raw.read(1)
+    raw.seek(at)
+    raw.write(bytes([b[0] ^ 0x10]))
+PYEOF
+}
+cp "$GOOD" "$W/flipped.h5" && flip "$W/flipped.h5" particles/x0
+expect_fail flipped "checkpoint $W/flipped.h5 is corrupt: dataset /particles/x0 fails its checksum" \
+  -output_dir "$W/o11" -restart "$W/flipped.h5"
+cp "$GOOD" "$W/flipped_state.h5" && flip "$W/flipped_state.h5" scene/errors_next_report
+expect_fail flipped_state "dataset /scene/errors_next_report fails its checksum" -output_dir "$W/o12" \
+  -restart "$W/flipped_state.h5"
+cp "$GOOD" "$W/dup.h5"
+"$PY" -c "import h5py; f=h5py.File('$W/dup.h5','r+'); g=f['particles/gid']; v=g[()]; v[3]=v[4]; g[...]=v"
+expect_fail duplicate_gid "checkpoint $W/dup.h5 is corrupt: dataset /particles/gid holds gid" \
+  -output_dir "$W/o13" -restart "$W/dup.h5"
 
 expect_fail output_dir "/dev/null/sub" -output_dir /dev/null/sub
 

@@ -2,7 +2,7 @@
 # seconds on one rank. Output under <build>/test-output/io/<test>.
 set(DMHS_IO_OUT ${CMAKE_BINARY_DIR}/test-output/io)
 set(DMHS_IO_DIR ${CMAKE_CURRENT_LIST_DIR}/../io)
-foreach(t restart consistency signal corrupt)
+foreach(t restart consistency signal corrupt restart_options outdir)
   add_test(NAME io_${t} COMMAND bash ${DMHS_IO_DIR}/${t}.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_IO_OUT}/${t})
   set_tests_properties(io_${t} PROPERTIES LABELS "io;validation" TIMEOUT 180)
 endforeach()
@@ -27,3 +27,17 @@ set_tests_properties(io_bonds PROPERTIES LABELS "io;mpi" TIMEOUT 120)
 add_test(NAME io_restart_ranks COMMAND bash ${DMHS_IO_DIR}/restart_ranks.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_MPIRUN}
   -- ${DMHS_IO_OUT}/restart_ranks)
 set_tests_properties(io_restart_ranks PROPERTIES LABELS "io;mpi" TIMEOUT 120)
+
+# Fault injection (label faults): a full disk (a small tmpfs; skipped without root/mount), and
+# test/io/faults.py: SIGTERM / SIGKILL while a checkpoint or a snapshot is being written, a
+# temporary name taken by a directory, a truncated and a bit-flipped checkpoint. Each must leave
+# a checkpoint that restarts, no .tmp once the directory is used again, and a run.json that says
+# what happened.
+add_test(NAME faults_disk_full COMMAND bash ${DMHS_IO_DIR}/diskfull.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_IO_OUT}/diskfull)
+set_tests_properties(faults_disk_full PROPERTIES LABELS "faults;io" TIMEOUT 120 SKIP_RETURN_CODE 77)
+foreach(case term_checkpoint kill_checkpoint term_snapshot kill_snapshot blocked_snapshot blocked_checkpoint
+        truncated flipped)
+  add_test(NAME faults_${case} COMMAND ${DMHS_PYTHON} ${DMHS_IO_DIR}/faults.py ${DMHS_EXE} ${DMHS_IO_OUT}/faults_${case}
+           ${case})
+  set_tests_properties(faults_${case} PROPERTIES LABELS "faults;io" TIMEOUT 180)
+endforeach()

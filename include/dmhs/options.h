@@ -1,0 +1,88 @@
+/* Checked option readers: every value is validated where it is read, by name.
+ *
+ * This header (included by dmhs/sim.h, so by every module and scene) redirects
+ * PETSc's readers used inside PetscOptionsBegin/End (PetscOptionsReal, Int,
+ * Bool, String, Enum, RealArray, StringArray) and the direct getters
+ * (PetscOptionsGetReal, GetInt, GetBool) to the options_* functions below.
+ * Each looks at the option's text in the database first and refuses, in one
+ * line naming the option, the value and what is allowed:
+ *   - an option given without a value where one is needed (`-dt` last on the line);
+ *   - a real that is not a number (`-dt garbage`) or not finite (inf, nan);
+ *   - an integer that is not one (`-channel_nx 2.5`) or out of range;
+ *   - a boolean other than true/false/yes/no/on/off/1/0;
+ *   - an enumeration value not in its list;
+ *   - an array with more values than the option takes (`-body_force 1e-4,0,0`)
+ *     or with a bad element;
+ * then calls PETSc's reader. Modules keep calling the PETSc names; ranges
+ * (h > 0, ...) stay with the module that knows them. src/core/options.c. */
+#ifndef DMHS_OPTIONS_H
+#define DMHS_OPTIONS_H
+#include <petscsys.h>
+
+PetscErrorCode options_real(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], PetscReal current, PetscReal *value, PetscBool *set);
+PetscErrorCode options_int(PetscOptionItems *po, const char opt[], const char text[],
+                           const char man[], PetscInt current, PetscInt *value, PetscBool *set,
+                           PetscInt lb, PetscInt ub);
+PetscErrorCode options_bool(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], PetscBool current, PetscBool *value, PetscBool *set);
+PetscErrorCode options_string(PetscOptionItems *po, const char opt[], const char text[],
+                              const char man[], const char current[], char *value, size_t len,
+                              PetscBool *set);
+PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], const char *const *list, PetscEnum current,
+                            PetscEnum *value, PetscBool *set);
+PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const char text[],
+                                  const char man[], PetscReal value[], PetscInt *n, PetscBool *set);
+PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], const char text[],
+                                    const char man[], char *value[], PetscInt *n, PetscBool *set);
+PetscErrorCode options_get_real(PetscOptions options, const char pre[], const char opt[],
+                                PetscReal *value, PetscBool *set);
+PetscErrorCode options_get_int(PetscOptions options, const char pre[], const char opt[],
+                               PetscInt *value, PetscBool *set);
+PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const char opt[],
+                                PetscBool *value, PetscBool *set);
+
+/* Every value the readers returned is recorded (the last one per option).
+ * options_physics: "name value\n" lines, sorted, of the recorded options that
+ * are not run control (-t_end, -output_*, -checkpoint_*, -restart*, -quiet,
+ * -progress_interval, -dump_final, -debug_*, -partition_imbalance, -preflight):
+ * what a checkpoint stores. PetscFree it. */
+PetscErrorCode options_physics(char **text);
+/* The differences between a stored options_physics text and the current one,
+ * "-name X in the checkpoint, Y now; ..." in report, and how many. */
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
+                                       int *n_changed);
+/* Clears the record (sim_destroy). */
+void options_forget(void);
+/* -help: from now on the recorded values stay (those of the chosen scene, read
+ * first); options first read later are listed with `note` (static text). */
+void options_help_freeze(const char *note);
+/* -help: every recorded option once, by section in the order first read:
+ * "-name <value as this run would use it>  description". */
+PetscErrorCode options_help_print(MPI_Comm comm);
+
+#undef PetscOptionsReal
+#undef PetscOptionsInt
+#undef PetscOptionsBool
+#undef PetscOptionsString
+#undef PetscOptionsEnum
+#undef PetscOptionsRealArray
+#undef PetscOptionsStringArray
+#define PetscOptionsReal(a, b, c, d, e, f) options_real(PetscOptionsObject, a, b, c, d, e, f)
+#define PetscOptionsInt(a, b, c, d, e, f)                                                          \
+  options_int(PetscOptionsObject, a, b, c, d, e, f, PETSC_MIN_INT, PETSC_MAX_INT)
+#define PetscOptionsBool(a, b, c, d, e, f) options_bool(PetscOptionsObject, a, b, c, d, e, f)
+#define PetscOptionsString(a, b, c, d, e, f, g)                                                    \
+  options_string(PetscOptionsObject, a, b, c, d, e, f, g)
+#define PetscOptionsEnum(a, b, c, d, e, f, g) options_enum(PetscOptionsObject, a, b, c, d, e, f, g)
+#define PetscOptionsRealArray(a, b, c, d, e, f)                                                    \
+  options_real_array(PetscOptionsObject, a, b, c, d, e, f)
+#define PetscOptionsStringArray(a, b, c, d, e, f)                                                  \
+  options_string_array(PetscOptionsObject, a, b, c, d, e, f)
+/* function-like macros over PETSc's functions; options.c calls the originals as (name)(...) */
+#define PetscOptionsGetReal(a, b, c, d, e) options_get_real(a, b, c, d, e)
+#define PetscOptionsGetInt(a, b, c, d, e)  options_get_int(a, b, c, d, e)
+#define PetscOptionsGetBool(a, b, c, d, e) options_get_bool(a, b, c, d, e)
+
+#endif

@@ -1,0 +1,576 @@
+/* Checked option readers (see dmhs/options.h): validate the option's text in
+ * the database, naming the option, the value and what it takes, then let
+ * PETSc read it. PETSc's own functions are called as (name)(...) so that the
+ * macros of options.h do not apply here. */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include "dmhs/sim.h"
+#include "dmhs/options.h"
+
+/* ---- the values every reader returned -------------------------------------
+ * For the restart comparison (exact values) and for -help (the section, the
+ * description and the value as shown). */
+
+typedef struct {
+  char *name, *value;           /* the value, exact (reals read back to the same double) */
+  char *section, *text, *shown; /* -help: PetscOptionsBegin title, description, value shown */
+  const char *note;             /* -help: why the option does not apply, or NULL */
+  size_t order;                 /* first reading */
+} options_entry;
+
+static options_entry *options_seen;
+static size_t options_n_seen, options_cap_seen, options_next_order;
+static PetscBool options_frozen; /* -help: the chosen scene's values stay */
+static const char *options_note;
+
+static char *options_dup(const char *v) {
+  return strdup(v ? v : "");
+}
+
+/* Plain malloc: the table may outlive PETSc's allocator (it is cleared by options_forget). */
+static PetscErrorCode options_record(PetscOptionItems *po, const char opt[], const char text[],
+                                     const char value[], const char shown[]) {
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < options_n_seen; k++)
+    if (!strcmp(options_seen[k].name, opt)) {
+      if (options_frozen)
+        PetscFunctionReturn(0);
+      char *v = options_dup(value), *w = options_dup(shown);
+      PetscCheck(v && w, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
+      free(options_seen[k].value);
+      free(options_seen[k].shown);
+      options_seen[k].value = v;
+      options_seen[k].shown = w;
+      PetscFunctionReturn(0);
+    }
+  if (options_n_seen == options_cap_seen) {
+    const size_t cap = 2 * options_cap_seen + 64;
+    options_entry *grown = realloc(options_seen, cap * sizeof(*grown));
+    PetscCheck(grown, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
+    options_seen = grown;
+    options_cap_seen = cap;
+  }
+  options_entry *e = &options_seen[options_n_seen];
+  e->name = options_dup(opt);
+  e->value = options_dup(value);
+  e->shown = options_dup(shown);
+  e->section = options_dup(po && po->title ? po->title : "");
+  e->text = options_dup(text);
+  e->note = options_note;
+  e->order = options_next_order++;
+  PetscCheck(e->name && e->value && e->shown && e->section && e->text, PETSC_COMM_SELF,
+             PETSC_ERR_MEM, "out of memory recording option %s", opt);
+  options_n_seen++;
+  PetscFunctionReturn(0);
+}
+
+/* The shortest text that reads back as the same double: exact, and as a user writes it. */
+static void options_format_real(double v, char *num, size_t len) {
+  for (int digits = 6; digits <= 17; digits++) {
+    snprintf(num, len, "%.*g", digits, v);
+    if (strtod(num, NULL) == v)
+      break;
+  }
+}
+
+/* n values; shown: the first n_shown of them */
+static PetscErrorCode options_record_real(PetscOptionItems *po, const char opt[], const char text[],
+                                          const PetscReal *v, PetscInt n, PetscInt n_shown) {
+  char value[1024], shown[1024];
+  size_t at = 0;
+  PetscFunctionBeginUser;
+  value[0] = shown[0] = 0;
+  for (PetscInt k = 0, at_shown = 0; k < n && at < sizeof(value); k++) {
+    char num[32];
+    options_format_real(v[k], num, sizeof(num));
+    at += (size_t)snprintf(value + at, sizeof(value) - at, "%s%s", k ? "," : "", num);
+    if (k < n_shown && at_shown < (PetscInt)sizeof(shown)) /* shown: 6 digits */
+      at_shown +=
+          snprintf(shown + at_shown, sizeof(shown) - (size_t)at_shown, "%s%g", k ? "," : "", v[k]);
+  }
+  PetscCall(options_record(po, opt, text, value, shown));
+  PetscFunctionReturn(0);
+}
+
+void options_forget(void) {
+  for (size_t k = 0; k < options_n_seen; k++) {
+    free(options_seen[k].name);
+    free(options_seen[k].value);
+    free(options_seen[k].section);
+    free(options_seen[k].text);
+    free(options_seen[k].shown);
+  }
+  free(options_seen);
+  options_seen = NULL;
+  options_n_seen = options_cap_seen = 0;
+  options_frozen = PETSC_FALSE;
+  options_note = NULL;
+}
+
+void options_help_freeze(const char *note) {
+  options_frozen = PETSC_TRUE;
+  options_note = note;
+}
+
+PetscErrorCode options_help_print(MPI_Comm comm) {
+  char *done;
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(options_n_seen + 1, &done));
+  for (size_t k = 0; k < options_n_seen; k++) {
+    if (done[k])
+      continue;
+    const char *section = options_seen[k].section;
+    int all_noted = 1;
+    for (size_t j = k; j < options_n_seen; j++)
+      if (!strcmp(options_seen[j].section, section) && !options_seen[j].note)
+        all_noted = 0;
+    PetscCall(PetscPrintf(comm, "\n%s%s%s%s:\n", section[0] ? section : "Other options",
+                          all_noted ? " (" : "", all_noted ? options_seen[k].note : "",
+                          all_noted ? ")" : ""));
+    for (size_t j = k; j < options_n_seen; j++) {
+      const options_entry *e = &options_seen[j];
+      if (done[j] || strcmp(e->section, section))
+        continue;
+      char head[512];
+      snprintf(head, sizeof(head), "%s <%s>", e->name, e->shown);
+      PetscCall(PetscPrintf(comm, "  %-30s %s%s%s%s\n", head, e->text,
+                            !all_noted && e->note ? " (" : "", !all_noted && e->note ? e->note : "",
+                            !all_noted && e->note ? ")" : ""));
+      done[j] = 1;
+    }
+  }
+  PetscCall(PetscFree(done));
+  PetscFunctionReturn(0);
+}
+
+/* Options that may differ between a run and its restart: when and where output
+ * goes, how long to run, checks and diagnostics that do not change the state. */
+static const char *const options_run_control[] = {"-t_end",
+                                                  "-output_dir",
+                                                  "-output_interval",
+                                                  "-output_snapshots",
+                                                  "-progress_interval",
+                                                  "-quiet",
+                                                  "-checkpoint_interval",
+                                                  "-checkpoint_at_end",
+                                                  "-restart",
+                                                  "-restart_allow_change",
+                                                  "-dump_final",
+                                                  "-debug_migration",
+                                                  "-debug_halo",
+                                                  "-partition_imbalance",
+                                                  "-preflight",
+                                                  "-dmhs_traceback"};
+
+static int options_is_run_control(const char *name) {
+  for (size_t k = 0; k < sizeof(options_run_control) / sizeof(options_run_control[0]); k++)
+    if (!strcmp(name, options_run_control[k]))
+      return 1;
+  return 0;
+}
+
+static int options_entry_cmp(const void *a, const void *b) {
+  return strcmp((*(const options_entry *const *)a)->name, (*(const options_entry *const *)b)->name);
+}
+
+PetscErrorCode options_physics(char **text) {
+  size_t len = 1;
+  const options_entry **sorted;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(options_n_seen + 1, &sorted));
+  for (size_t k = 0; k < options_n_seen; k++) {
+    sorted[k] = &options_seen[k];
+    len += strlen(options_seen[k].name) + strlen(options_seen[k].value) + 2;
+  }
+  qsort(sorted, options_n_seen, sizeof(*sorted), options_entry_cmp);
+  PetscCall(PetscMalloc1(len, text));
+  (*text)[0] = 0;
+  for (size_t k = 0; k < options_n_seen; k++) {
+    if (options_is_run_control(sorted[k]->name))
+      continue;
+    PetscCall(PetscStrlcat(*text, sorted[k]->name, len));
+    PetscCall(PetscStrlcat(*text, " ", len));
+    PetscCall(PetscStrlcat(*text, sorted[k]->value, len));
+    PetscCall(PetscStrlcat(*text, "\n", len));
+  }
+  PetscCall(PetscFree(sorted));
+  PetscFunctionReturn(0);
+}
+
+/* The value of name in a "name value\n" list, or NULL; *vlen its length. */
+static const char *options_lookup(const char *list, const char *name, size_t *vlen) {
+  const size_t nlen = strlen(name);
+  for (const char *line = list; line && *line;) {
+    const char *end = strchr(line, '\n');
+    const size_t llen = end ? (size_t)(end - line) : strlen(line);
+    if (llen > nlen && !strncmp(line, name, nlen) && line[nlen] == ' ') {
+      *vlen = llen - nlen - 1;
+      return line + nlen + 1;
+    }
+    line = end ? end + 1 : NULL;
+  }
+  return NULL;
+}
+
+static void options_append(char *report, size_t len, int *n, const char *name, const char *was,
+                           size_t was_len, const char *now, size_t now_len) {
+  const size_t at = strlen(report);
+  if (at + 1 < len)
+    snprintf(report + at, len - at, "%s%s %.*s in the checkpoint, %.*s now", *n ? "; " : "", name,
+             (int)was_len, was ? was : "(not set)", (int)now_len, now ? now : "(not set)");
+  (*n)++;
+}
+
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
+                                       int *n_changed) {
+  char *now;
+  PetscFunctionBeginUser;
+  PetscCall(options_physics(&now));
+  report[0] = 0;
+  *n_changed = 0;
+  for (int pass = 0; pass < 2; pass++) {
+    const char *a = pass ? stored : now, *b = pass ? now : stored;
+    for (const char *line = a; *line;) {
+      const char *end = strchr(line, '\n');
+      const size_t llen = end ? (size_t)(end - line) : strlen(line);
+      const char *space = memchr(line, ' ', llen);
+      if (space) {
+        char name[128];
+        const size_t nlen = PetscMin((size_t)(space - line), sizeof(name) - 1);
+        size_t blen = 0;
+        memcpy(name, line, nlen);
+        name[nlen] = 0;
+        const char *value = space + 1, *other = options_lookup(b, name, &blen);
+        const size_t vlen = llen - nlen - 1;
+        if (!other && !options_is_run_control(name)) { /* only on one side */
+          if (pass)
+            options_append(report, len, n_changed, name, value, vlen, NULL, 9);
+          else
+            options_append(report, len, n_changed, name, NULL, 9, value, vlen);
+        } else if (other && !pass && (blen != vlen || strncmp(value, other, vlen)))
+          options_append(report, len, n_changed, name, other, blen, value, vlen);
+      }
+      line = end ? end + 1 : line + llen;
+    }
+  }
+  PetscCall(PetscFree(now));
+  PetscFunctionReturn(0);
+}
+
+/* The option's text: *found, and *raw = NULL when it was given without a value. */
+static PetscErrorCode options_raw(PetscOptions options, const char pre[], const char opt[],
+                                  const char **raw, PetscBool *found) {
+  PetscFunctionBeginUser;
+  *raw = NULL;
+  PetscCall(PetscOptionsFindPair(options, pre, opt, raw, found));
+  if (*found && *raw && !(*raw)[0])
+    *raw = NULL;
+  PetscFunctionReturn(0);
+}
+
+/* The whole of t (trailing blanks aside) is a number. */
+static int options_parse_real(const char *t, double *v) {
+  char *end;
+  *v = strtod(t, &end);
+  if (end == t)
+    return 0;
+  while (isspace((unsigned char)*end))
+    end++;
+  return *end == 0;
+}
+
+static int options_parse_int(const char *t, long long *v) {
+  char *end;
+  errno = 0;
+  *v = strtoll(t, &end, 10);
+  if (end == t || errno == ERANGE)
+    return 0;
+  while (isspace((unsigned char)*end))
+    end++;
+  return *end == 0;
+}
+
+static PetscErrorCode options_check_real(MPI_Comm comm, const char opt[], const char raw[],
+                                         const char elem[], const char takes[], const char text[]) {
+  double v;
+  char what[300];
+  PetscFunctionBeginUser;
+  if (elem == raw)
+    what[0] = 0;
+  else
+    snprintf(what, sizeof(what), "'%s' is ", elem);
+  PetscCheck(options_parse_real(elem, &v), comm, PETSC_ERR_ARG_WRONG,
+             "%s %s: %snot a number; %s takes %s (%s)", opt, raw, what, opt, takes, text);
+  PetscCheck(isfinite(v), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: %snot finite; %s takes %s (%s)",
+             opt, raw, what, opt, takes, text);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode options_need_value(MPI_Comm comm, const char opt[], const char *raw,
+                                         const char takes[], const char text[]) {
+  PetscFunctionBeginUser;
+  PetscCheck(raw, comm, PETSC_ERR_ARG_WRONG,
+             "option %s was given without a value; it takes %s (%s)", opt, takes, text);
+  PetscFunctionReturn(0);
+}
+
+/* Comma-separated elements of raw: at most nmax, each checked by kind (0 real, 1 string). */
+static PetscErrorCode options_check_list(MPI_Comm comm, const char opt[], const char raw[],
+                                         PetscInt nmax, int kind, const char text[]) {
+  char takes[96], elem[256];
+  PetscInt count = 0;
+  PetscFunctionBeginUser;
+  snprintf(takes, sizeof(takes), "up to %d %s separated by commas", (int)nmax,
+           kind == 0 ? "finite real numbers" : "names");
+  for (const char *c = raw;; c++) {
+    const char *comma = strchr(c, ',');
+    const size_t len = comma ? (size_t)(comma - c) : strlen(c);
+    count++;
+    PetscCheck(len < sizeof(elem), comm, PETSC_ERR_ARG_WRONG, "%s %s: an element is too long", opt,
+               raw);
+    memcpy(elem, c, len);
+    elem[len] = 0;
+    PetscCheck(len > 0, comm, PETSC_ERR_ARG_WRONG, "%s %s: empty element %d; %s takes %s (%s)", opt,
+               raw, (int)count, opt, takes, text);
+    if (kind == 0)
+      PetscCall(options_check_real(comm, opt, raw, elem, takes, text));
+    if (!comma)
+      break;
+    c = comma;
+  }
+  PetscCheck(count <= nmax, comm, PETSC_ERR_ARG_SIZ, "%s %s: %d values, but %s takes %s (%s)", opt,
+             raw, (int)count, opt, takes, text);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode options_check_int(MPI_Comm comm, const char opt[], const char *raw,
+                                        PetscInt lb, PetscInt ub, const char text[]) {
+  long long v;
+  PetscFunctionBeginUser;
+  PetscCall(options_need_value(comm, opt, raw, "an integer", text));
+  PetscCheck(options_parse_int(raw, &v), comm, PETSC_ERR_ARG_WRONG,
+             "%s %s: not an integer; %s takes an integer (%s)", opt, raw, opt, text);
+  PetscCheck(v >= lb && v <= ub, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "%s %s: out of range; %s takes an integer in [%" PetscInt_FMT ", %" PetscInt_FMT
+             "] (%s)",
+             opt, raw, opt, lb, ub, text);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode options_check_bool(MPI_Comm comm, const char opt[], const char *raw,
+                                         const char text[]) {
+  static const char *const words[] = {"1", "0", "true", "false", "yes", "no", "on", "off"};
+  PetscFunctionBeginUser;
+  if (!raw)
+    PetscFunctionReturn(0); /* -quiet alone means true */
+  for (size_t k = 0; k < sizeof(words) / sizeof(words[0]); k++)
+    if (!strcasecmp(raw, words[k]))
+      PetscFunctionReturn(0);
+  SETERRQ(comm, PETSC_ERR_ARG_WRONG,
+          "%s %s: not a boolean; %s takes true or false (or nothing for true) (%s)", opt, raw, opt,
+          text);
+}
+
+PetscErrorCode options_real(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], PetscReal current, PetscReal *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found) {
+    PetscCall(options_need_value(po->comm, opt, raw, "a finite real number", text));
+    PetscCall(options_check_real(po->comm, opt, raw, raw, "a finite real number", text));
+  }
+  PetscCall(PetscOptionsReal_Private(po, opt, text, man, current, value, set));
+  PetscCall(options_record_real(po, opt, text, value, 1, 1));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_int(PetscOptionItems *po, const char opt[], const char text[],
+                           const char man[], PetscInt current, PetscInt *value, PetscBool *set,
+                           PetscInt lb, PetscInt ub) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found)
+    PetscCall(options_check_int(po->comm, opt, raw, lb, ub, text));
+  PetscCall(PetscOptionsInt_Private(po, opt, text, man, current, value, set, lb, ub));
+  {
+    char v[32];
+    snprintf(v, sizeof(v), "%" PetscInt_FMT, *value);
+    PetscCall(options_record(po, opt, text, v, v));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_bool(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], PetscBool current, PetscBool *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found)
+    PetscCall(options_check_bool(po->comm, opt, raw, text));
+  PetscCall(PetscOptionsBool_Private(po, opt, text, man, current, value, set));
+  PetscCall(options_record(po, opt, text, *value ? "true" : "false", *value ? "true" : "false"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_string(PetscOptionItems *po, const char opt[], const char text[],
+                              const char man[], const char current[], char *value, size_t len,
+                              PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found) {
+    PetscCall(options_need_value(po->comm, opt, raw, "a text value", text));
+    PetscCheck(strlen(raw) < len, po->comm, PETSC_ERR_ARG_SIZ, "%s %s: longer than %zu characters",
+               opt, raw, len - 1);
+  }
+  PetscCall(PetscOptionsString_Private(po, opt, text, man, current, value, len, set));
+  PetscCall(options_record(po, opt, text, value, value[0] ? value : "none"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char text[],
+                            const char man[], const char *const *list, PetscEnum current,
+                            PetscEnum *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  char choices[256] = "";
+  int n = 0;
+  PetscFunctionBeginUser;
+  while (list[n])
+    n++;
+  n -= 2; /* PETSc enum lists end with the type name and the prefix */
+  for (int k = 0; k < n; k++) {
+    if (k)
+      PetscCall(PetscStrlcat(choices, ", ", sizeof(choices)));
+    PetscCall(PetscStrlcat(choices, list[k], sizeof(choices)));
+  }
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found) {
+    char takes[300];
+    snprintf(takes, sizeof(takes), "one of %s", choices);
+    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
+    int k = 0;
+    while (k < n && strcasecmp(raw, list[k]))
+      k++;
+    PetscCheck(k < n, po->comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+               "%s %s: unknown value; %s takes %s (%s)", opt, raw, opt, takes, text);
+  }
+  PetscCall(PetscOptionsEnum_Private(po, opt, text, man, list, current, value, set));
+  {
+    const char *v = (int)*value >= 0 && (int)*value < n ? list[*value] : "?";
+    char described[600];
+    snprintf(described, sizeof(described), "%s; one of %s", text, choices);
+    PetscCall(options_record(po, opt, described, v, v));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const char text[],
+                                  const char man[], PetscReal value[], PetscInt *n,
+                                  PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found) {
+    char takes[96];
+    snprintf(takes, sizeof(takes), "up to %d finite real numbers separated by commas", (int)*n);
+    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
+    PetscCall(options_check_list(po->comm, opt, raw, *n, 0, text));
+  }
+  const PetscInt nmax = *n;
+  PetscBool given;
+  PetscCall(PetscOptionsRealArray_Private(po, opt, text, man, value, n, &given));
+  if (set)
+    *set = given;
+  if (!given)
+    *n = nmax; /* PETSc says 0 when the option is absent: the defaults stay */
+  /* shown: what was given, else the defaults; a list longer than a vector (one value per
+   * type, report times) without its unset tail */
+  PetscInt n_shown = *n;
+  if (!given && nmax > 3) /* zeros or copies of the value before */
+    while (n_shown > 1 && (value[n_shown - 1] == 0 || value[n_shown - 1] == value[n_shown - 2]))
+      n_shown--;
+  PetscCall(options_record_real(po, opt, text, value, *n, n_shown));
+  if (!given)
+    *n = 0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], const char text[],
+                                    const char man[], char *value[], PetscInt *n, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  if (found) {
+    char takes[96];
+    snprintf(takes, sizeof(takes), "up to %d names separated by commas", (int)*n);
+    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
+    PetscCall(options_check_list(po->comm, opt, raw, *n, 1, text));
+  }
+  PetscBool given;
+  PetscCall(PetscOptionsStringArray_Private(po, opt, text, man, value, n, &given));
+  if (set)
+    *set = given;
+  {
+    char v[1024] = "";
+    for (PetscInt k = 0; given && k < *n; k++) {
+      if (k)
+        PetscCall(PetscStrlcat(v, ",", sizeof(v)));
+      PetscCall(PetscStrlcat(v, value[k], sizeof(v)));
+    }
+    PetscCall(options_record(po, opt, text, given ? v : "(default)", given ? v : "default"));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_get_real(PetscOptions options, const char pre[], const char opt[],
+                                PetscReal *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(options, pre, opt, &raw, &found));
+  if (found) {
+    PetscCall(options_need_value(PETSC_COMM_SELF, opt, raw, "a finite real number", "see -help"));
+    PetscCall(
+        options_check_real(PETSC_COMM_SELF, opt, raw, raw, "a finite real number", "see -help"));
+  }
+  PetscCall((PetscOptionsGetReal)(options, pre, opt, value, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_get_int(PetscOptions options, const char pre[], const char opt[],
+                               PetscInt *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(options, pre, opt, &raw, &found));
+  if (found)
+    PetscCall(
+        options_check_int(PETSC_COMM_SELF, opt, raw, PETSC_MIN_INT, PETSC_MAX_INT, "see -help"));
+  PetscCall((PetscOptionsGetInt)(options, pre, opt, value, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const char opt[],
+                                PetscBool *value, PetscBool *set) {
+  const char *raw;
+  PetscBool found;
+  PetscFunctionBeginUser;
+  PetscCall(options_raw(options, pre, opt, &raw, &found));
+  if (found)
+    PetscCall(options_check_bool(PETSC_COMM_SELF, opt, raw, "see -help"));
+  PetscCall((PetscOptionsGetBool)(options, pre, opt, value, set));
+  PetscFunctionReturn(0);
+}
