@@ -37,6 +37,10 @@ struct module {
    * (xx, xy, yy) [N m per unit depth], to W[i] for the rows its forces reach,
    * exactly as compute() distributes forces (writes to ghost rows are ignored). */
   PetscErrorCode (*virial)(module *self, struct sim *s, double (*W)[3]);
+  /* Optional: runs at the end of every step, after the state check and
+   * before the scene's diagnostics; may change the structure (then it forces
+   * a neighbour rebuild itself). Collective. */
+  PetscErrorCode (*post_step)(module *self, struct sim *s);
 };
 
 #endif

@@ -342,6 +342,8 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(sim_compute_forces(s));
     PetscCall(integrate_second_half(s));
     PetscCall(integrate_check_state(s));
+    for (int m = 0; m < s->n_modules; m++)
+      if (s->modules[m]->post_step) PetscCall(s->modules[m]->post_step(s->modules[m], s));
     s->particle_steps += n_owned_global;
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
     if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
