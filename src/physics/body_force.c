@@ -80,7 +80,7 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
       for (int t = 0; t < PTYPE_COUNT; t++)
         if (!strcmp(types[k], body_force_type_names[t])) found = t;
       PetscCheck(found >= 0 && found != PTYPE_WALL, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-                 "-body_force_types: '%s' is not fluid, solid or clot (walls move as prescribed)", types[k]);
+                 "-body_force_types: '%s' is not fluid or solid or clot (walls move as prescribed)", types[k]);
       d->on_type[found] = PETSC_TRUE;
     }
   }
