@@ -210,7 +210,8 @@ static void test_new_bond_zero_energy(void **state) {
   const double ya[2] = {1.234567e-4, 5.4321e-3},
                yb[2] = {9.93e-3, 5.61e-3}; /* 3.2e-4 m apart through x = 0 */
   new_bond(ya, yb, -1e-2, &e, &amax);
-  if (!(fabs(e) < 1e-28)) print_error("periodic: energy %g, a %g\n", e, amax);
+  if (!(fabs(e) < 1e-28))
+    print_error("periodic: energy %g, a %g\n", e, amax);
   assert_true(fabs(e) < 1e-28);
   assert_true(amax < 1e-9); /* vs K r0 / m ~ 1e4 m/s^2 for a bond stretched by r0 */
 }
