@@ -38,8 +38,11 @@ struct module {
    * exactly as compute() distributes forces (writes to ghost rows are ignored). */
   PetscErrorCode (*virial)(module *self, struct sim *s, double (*W)[3]);
   /* Optional: runs at the end of every step, after the state check and
-   * before the scene's diagnostics; may change the structure (then it forces
-   * a neighbour rebuild itself). Collective. */
+   * before the scene's diagnostics. It may change the structure (bonds,
+   * types); it then sets sim->force_rebuild, so that the next step migrates
+   * and rebuilds ghosts, pairs and the topology's resolution before its force
+   * sweep (a rebuild here would leave migrated rows without their derived
+   * fields, e.g. p, until then), and checkpoints that flag. Collective. */
   PetscErrorCode (*post_step)(module *self, struct sim *s);
 };
 

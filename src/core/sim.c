@@ -200,6 +200,14 @@ PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode sim_refresh_ghosts(sim *s) {
+  int n;
+  const char *const *names = sim_ghost_fields(&n);
+  PetscFunctionBeginUser;
+  PetscCall(halo_forward(&s->hal, &s->ps, names, n));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sim_rebuild_as_last_built(sim *s) {
   particles *ps = &s->ps;
   int n;
@@ -338,7 +346,8 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(integrate_first_half(s));
     s->step++;
     s->t = s->step * s->dt; /* no accumulated round-off in t */
-    PetscCall(sim_update_neighbours(s, PETSC_FALSE));
+    PetscCall(sim_update_neighbours(s, s->force_rebuild));
+    s->force_rebuild = PETSC_FALSE;
     PetscCall(sim_compute_forces(s));
     PetscCall(integrate_second_half(s));
     PetscCall(integrate_check_state(s));

@@ -396,8 +396,9 @@ static PetscErrorCode agglomeration_post_step(module *self, sim *s) {
   else
     PetscCall(agg_grow(s, d, d->next_event));
   d->next_event++;
-  /* types changed and bonds were added: ghosts, topology and exclusions anew */
-  PetscCall(sim_update_neighbours(s, PETSC_TRUE));
+  /* types changed and bonds were added: the next step migrates and rebuilds
+   * ghosts, the topology's resolution and the exclusions before its forces */
+  s->force_rebuild = PETSC_TRUE;
   PetscCall(agg_write_row(s, d));
   PetscFunctionReturn(0);
 }
@@ -543,10 +544,10 @@ static PetscErrorCode agglomeration_checkpoint_write(module *self, sim *s, check
   const agg_data *d = self->data;
   const topology *t = s->topo;
   const PetscInt nb = t->n_bonds - d->n_static_bonds;
-  PetscInt64 state[4] = {d->next_event, d->n_seeds, d->n_clot, nb}, *g, *sd;
+  PetscInt64 state[5] = {d->next_event, d->n_seeds, d->n_clot, nb, s->force_rebuild ? 1 : 0}, *g, *sd;
   double *r0;
   PetscFunctionBeginUser;
-  PetscCall(checkpoint_put_ints(io, "state", state, 4));
+  PetscCall(checkpoint_put_ints(io, "state", state, 5));
   if (d->n_seeds)
     PetscCall(checkpoint_put_ints(io, "seed_gid", d->seed_gid, d->n_seeds));
   if (d->n_clot) {
@@ -574,15 +575,16 @@ static PetscErrorCode agglomeration_checkpoint_write(module *self, sim *s, check
 static PetscErrorCode agglomeration_checkpoint_read(module *self, sim *s, checkpoint_io *io) {
   agg_data *d = self->data;
   topology *t = s->topo;
-  PetscInt64 state[4], *g;
+  PetscInt64 state[5], *g;
   double *r0;
   PetscFunctionBeginUser;
-  PetscCall(checkpoint_get_ints(io, "state", state, 4));
+  PetscCall(checkpoint_get_ints(io, "state", state, 5));
   PetscCheck(state[1] >= 0 && state[1] <= AGGLOMERATION_MAX_SEEDS && state[2] >= 0 && state[3] >= 0,
              PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: invalid agglomeration state");
   PetscCheck(t->n_bonds == d->n_static_bonds && d->n_clot == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "agglomeration: restart into a run that already made clot bonds");
   d->next_event = d->restart_event = state[0];
+  s->force_rebuild = state[4] ? PETSC_TRUE : PETSC_FALSE; /* written at an event's step */
   d->n_seeds = (PetscInt)state[1];
   if (d->n_seeds)
     PetscCall(checkpoint_get_ints(io, "seed_gid", d->seed_gid, d->n_seeds));

@@ -99,6 +99,9 @@ static PetscErrorCode vein_extreme_sinus(sim *s, const double *value, int sign, 
 static PetscErrorCode vein_choose_seeds(sim *s, void *ctx, PetscInt *n, PetscInt64 gids[]) {
   PetscFunctionBeginUser;
   (void)ctx;
+  /* current neighbour values (ghosts are refreshed only at the next step's
+   * start): the stresses, hence the seeds, are then the same on any rank count */
+  PetscCall(sim_refresh_ghosts(s));
   PetscCall(stress_compute(s));
   PetscCall(vein_extreme_sinus(s, s->ps.stress_mag, +1, -1, &gids[0]));
   PetscCall(vein_extreme_sinus(s, s->ps.displacement, -1, gids[0], &gids[1]));
