@@ -2,7 +2,8 @@
 # "Clot agglomeration"): on 3 ranks the two seeds' clots grow, clots.csv is
 # consistent with the last snapshot (particle types, clot bonds), no NaN; on 1
 # rank clots.csv and vein.csv are the same byte for byte; a checkpoint at
-# t = 0.065 s (2 ranks) restarted on 1 rank too; the clot-size plot and the
+# t = 0.06 s (2 ranks; the step of an event, whose rebuild is pending) restarted
+# on 1 rank too; the clot-size plot and the
 # snapshot picture are drawn.
 set(DMHS_CLOTS ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/clots.py --exe ${DMHS_EXE}
     --opts ${PROJECT_SOURCE_DIR}/input/vein-clot-quick.opts)
@@ -18,7 +19,7 @@ set_tests_properties(validation_clot_quick PROPERTIES LABELS validation TIMEOUT 
                      FIXTURES_SETUP clot_quick FIXTURES_REQUIRED clot_quick_3ranks)
 add_test(NAME validation_clot_restart
          COMMAND ${DMHS_CLOTS} --mode restart --outdir ${DMHS_CLOTS_OUT}/restart --ranks 2 --restart-ranks 1
-                 --mpirun "${DMHS_CLOTS_MPIRUN}" --t-stop 0.065 --compare ${DMHS_CLOTS_OUT}/quick-3ranks)
+                 --mpirun "${DMHS_CLOTS_MPIRUN}" --t-stop 0.06 --compare ${DMHS_CLOTS_OUT}/quick-3ranks)
 set_tests_properties(validation_clot_restart PROPERTIES LABELS "validation;io;mpi" TIMEOUT 300
                      FIXTURES_REQUIRED clot_quick_3ranks)
 add_test(NAME validation_clot_plot

@@ -134,7 +134,7 @@ def main():
     p.add_argument("--mode", default="run", choices=["run", "restart"])
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--restart-ranks", type=int, default=1)
-    p.add_argument("--t-stop", type=float, default=0.065)
+    p.add_argument("--t-stop", type=float, default=0.06)
     p.add_argument("--mpirun", default="mpirun --oversubscribe --allow-run-as-root")
     p.add_argument("--compare")
     args = p.parse_args()
