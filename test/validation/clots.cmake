@@ -31,3 +31,16 @@ add_test(NAME validation_clot_plot_check
          COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_SOURCE_DIR}/validation/vein_plots.cmake
                  ${DMHS_CLOTS_OUT}/plots/clots.png ${DMHS_CLOTS_OUT}/plots/clots_snapshot.png)
 set_tests_properties(validation_clot_plot_check PROPERTIES LABELS validation TIMEOUT 30 FIXTURES_REQUIRED clot_plot)
+
+# option errors name the option (test/cli/cli.cmake defines dmhs_cli_fail)
+set(DMHS_CLOT_OPTS -options_file ${PROJECT_SOURCE_DIR}/input/vein-clot-quick.opts -quiet)
+dmhs_cli_fail(cli_clot_odd_seeds "-agglomeration_seeds takes pairs x,y" ${DMHS_CLOT_OPTS}
+              -agglomeration_seeds 0.015 -output_dir ${DMHS_CLOTS_OUT}/cli-a)
+dmhs_cli_fail(cli_clot_probability "-agglomeration_probability must lie in \\[0, 1\\]" ${DMHS_CLOT_OPTS}
+              -agglomeration_probability 2 -output_dir ${DMHS_CLOTS_OUT}/cli-b)
+dmhs_cli_fail(cli_clot_interval "-agglomeration_interval must be > 0" ${DMHS_CLOT_OPTS}
+              -agglomeration_interval 0 -output_dir ${DMHS_CLOTS_OUT}/cli-c)
+# without -vein_clots the module is not there: its options are not swallowed
+dmhs_cli_fail(cli_clot_module_off "unknown or unused option -agglomeration_rmax"
+              -options_file ${PROJECT_SOURCE_DIR}/input/vein-quick.opts -quiet -agglomeration_rmax 1e-3
+              -output_dir ${DMHS_CLOTS_OUT}/cli-d)
