@@ -37,6 +37,13 @@ struct module {
    * (xx, xy, yy) [N m per unit depth], to W[i] for the rows its forces reach,
    * exactly as compute() distributes forces (writes to ghost rows are ignored). */
   PetscErrorCode (*virial)(module *self, struct sim *s, double (*W)[3]);
+  /* Optional: runs at the end of every step, after the state check and
+   * before the scene's diagnostics. It may change the structure (bonds,
+   * types); it then sets sim->force_rebuild, so that the next step migrates
+   * and rebuilds ghosts, pairs and the topology's resolution before its force
+   * sweep (a rebuild here would leave migrated rows without their derived
+   * fields, e.g. p, until then), and checkpoints that flag. Collective. */
+  PetscErrorCode (*post_step)(module *self, struct sim *s);
 };
 
 #endif

@@ -12,6 +12,8 @@ typedef enum {
   PTYPE_FLUID = 0, /* SPH liquid, integrated */
   PTYPE_WALL = 1,  /* SPH wall: prescribed velocity, boundary values extrapolated (sph_wall.c) */
   PTYPE_SOLID = 2, /* bonded particle that is also an SPH particle, integrated */
+  PTYPE_CLOT = 3,  /* liquid particle joined to a clot (agglomeration.c): SPH, integrated, moved by its
+                    * bonds, no liquid body force by default, no liquid-solid repulsion with the liquid */
   PTYPE_COUNT
 } particle_type;
 

@@ -45,6 +45,7 @@ typedef struct sim {
   double skin;        /* [m]; ghosts and pairs reach this much further than any interaction */
   double list_cutoff; /* pair_cutoff + skin: the pair list's radius */
   PetscInt n_rebuilds;
+  PetscBool force_rebuild; /* a module changed the structure (post_step): the next step rebuilds */
   /* mpi: domain decomposition, migration check, debug and dump options */
   partition part;
   migrate_check mig;
@@ -79,6 +80,9 @@ PetscErrorCode sim_compute_forces(sim *s);
 PetscErrorCode sim_rebuild_neighbours(sim *s);
 /* Per step: migrate + rebuild when due (or forced), else refresh the ghosts. */
 PetscErrorCode sim_update_neighbours(sim *s, PetscBool force);
+/* Copies the owned rows' ghost fields into their ghosts (as between builds),
+ * so that a diagnostic outside the step sees current neighbour values. */
+PetscErrorCode sim_refresh_ghosts(sim *s);
 /* After a restart: rebuilds ghosts and pairs from the positions of the last
  * build (x_build), as the uninterrupted run had them, then refreshes ghosts. */
 PetscErrorCode sim_rebuild_as_last_built(sim *s);

@@ -30,6 +30,10 @@ typedef struct topology {
   PetscInt n_bonds, n_alloc_bonds;
   PetscInt64 (*bond_gid)[2];
   PetscInt *bond_type;
+  double *bond_r0; /* per bond rest length [m]; 0 = the type's r0 (bonds made at run time set it) */
+  /* bond type of the bonds made at run time (agglomeration.c), which its own
+   * force (bond_clot.c) handles and the bond modules skip; -1 = none */
+  PetscInt runtime_type;
   PetscInt n_angles, n_alloc_angles;
   PetscInt64 (*angle_gid)[3]; /* i, j (centre), k */
   PetscInt *angle_type;
@@ -65,6 +69,8 @@ PetscErrorCode topology_create(topology **t);
 PetscErrorCode topology_destroy(topology **t);
 /* Scene builders add the structure by global id. */
 PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type);
+/* The same with the bond's own rest length r0 [m] (bonds made at run time). */
+PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type, double r0);
 PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk, PetscInt type);
 /* Index of a bonded particle's gid in t->gids (sorted), or -1 when it has no bond. */
 PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot);

@@ -11,6 +11,7 @@
 #include "dmhs/repulsion.h"
 #include "dmhs/solid_load.h"
 #include "dmhs/peristalsis.h"
+#include "dmhs/agglomeration.h"
 
 static const struct {
   const char *name;
@@ -38,6 +39,7 @@ static const struct {
     {"repulsion", repulsion_module_create},
     {"solid_load", solid_load_module_create},
     {"peristalsis", peristalsis_module_create}, /* intestine */
+    {"agglomeration", agglomeration_module_create}, /* vein clots (issue 9) */
 };
 
 #define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))

@@ -200,6 +200,14 @@ PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode sim_refresh_ghosts(sim *s) {
+  int n;
+  const char *const *names = sim_ghost_fields(&n);
+  PetscFunctionBeginUser;
+  PetscCall(halo_forward(&s->hal, &s->ps, names, n));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sim_rebuild_as_last_built(sim *s) {
   particles *ps = &s->ps;
   int n;
@@ -340,10 +348,13 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(integrate_first_half(s));
     s->step++;
     s->t = s->step * s->dt; /* no accumulated round-off in t */
-    PetscCall(sim_update_neighbours(s, PETSC_FALSE));
+    PetscCall(sim_update_neighbours(s, s->force_rebuild));
+    s->force_rebuild = PETSC_FALSE;
     PetscCall(sim_compute_forces(s));
     PetscCall(integrate_second_half(s));
     PetscCall(integrate_check_state(s));
+    for (int m = 0; m < s->n_modules; m++)
+      if (s->modules[m]->post_step) PetscCall(s->modules[m]->post_step(s->modules[m], s));
     s->particle_steps += n_owned_global;
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
     if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));

@@ -15,6 +15,7 @@ PetscErrorCode topology_create(topology **t) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(t));
   (*t)->dirty = PETSC_TRUE;
+  (*t)->runtime_type = -1;
   PetscFunctionReturn(0);
 }
 
@@ -22,7 +23,7 @@ PetscErrorCode topology_destroy(topology **tp) {
   topology *t = *tp;
   PetscFunctionBeginUser;
   if (!t) PetscFunctionReturn(0);
-  PetscCall(PetscFree2(t->bond_gid, t->bond_type));
+  PetscCall(PetscFree3(t->bond_gid, t->bond_type, t->bond_r0));
   PetscCall(PetscFree2(t->angle_gid, t->angle_type));
   PetscCall(PetscFree(t->gids));
   PetscCall(PetscFree2(t->ex_start, t->ex_gid));
@@ -36,6 +37,14 @@ PetscErrorCode topology_destroy(topology **tp) {
 
 PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type) {
   PetscFunctionBeginUser;
+  PetscCall(topology_add_bond_r0(t, gi, gj, type, 0.0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type, double r0) {
+  PetscFunctionBeginUser;
+  PetscCheck(r0 >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": rest length %g m < 0", gi, gj, r0);
   PetscCheck(gi != gj, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "bond from particle gid %" PetscInt64_FMT " to itself", gi);
   PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": type %" PetscInt_FMT " outside [0, %d)", gi, gj, type,
@@ -44,21 +53,25 @@ PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, Pets
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_bonds);
     PetscInt64(*g)[2];
     PetscInt *ty;
-    PetscCall(PetscMalloc2(grown, &g, grown, &ty));
+    double *r;
+    PetscCall(PetscMalloc3(grown, &g, grown, &ty, grown, &r));
     if (t->n_bonds) {
       PetscCall(PetscArraycpy(g, t->bond_gid, t->n_bonds));
       PetscCall(PetscArraycpy(ty, t->bond_type, t->n_bonds));
+      PetscCall(PetscArraycpy(r, t->bond_r0, t->n_bonds));
     }
-    PetscCall(PetscFree2(t->bond_gid, t->bond_type));
+    PetscCall(PetscFree3(t->bond_gid, t->bond_type, t->bond_r0));
     t->bond_gid = g;
     t->bond_type = ty;
+    t->bond_r0 = r;
     t->n_alloc_bonds = grown;
   }
   t->bond_gid[t->n_bonds][0] = gi;
   t->bond_gid[t->n_bonds][1] = gj;
   t->bond_type[t->n_bonds] = type;
+  t->bond_r0[t->n_bonds] = r0;
   t->n_bonds++;
-  t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
+  if (type != t->runtime_type) t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
   t->dirty = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -285,7 +298,7 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
   for (PetscInt r = n - 1; r >= 0; r--) {
     t->slot[r] = -1;
     t->next[r] = -1;
-    if (ps->type[r] == PTYPE_FLUID) continue; /* bonded particles are solids or walls (checked in setup) */
+    if (ps->type[r] == PTYPE_FLUID) continue; /* bonded particles are solids, walls or clot particles */
     const PetscInt s = topology_slot_of(t, ps->gid[r]);
     if (s < 0) continue;
     t->slot[r] = s;

@@ -18,7 +18,7 @@ typedef struct {
   PetscBool on_type[PTYPE_COUNT]; /* which particle types feel it (walls never: their motion is prescribed) */
 } body_force_data;
 
-static const char *const body_force_type_names[PTYPE_COUNT] = {"fluid", "wall", "solid"};
+static const char *const body_force_type_names[PTYPE_COUNT] = {"fluid", "wall", "solid", "clot"};
 
 PetscErrorCode body_force_set_default(module *m, double fx, double fy) {
   body_force_data *d = m->data;
@@ -70,7 +70,7 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
                              d->period, &d->period, NULL));
   PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
-  PetscCall(PetscOptionsStringArray("-body_force_types", "Particle types the body force acts on: fluid, solid [1]",
+  PetscCall(PetscOptionsStringArray("-body_force_types", "Particle types the body force acts on: fluid, solid, clot [1]",
                                     NULL, types, &n_types, &set_types));
   PetscOptionsEnd();
   if (set_types) {
@@ -80,7 +80,7 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
       for (int t = 0; t < PTYPE_COUNT; t++)
         if (!strcmp(types[k], body_force_type_names[t])) found = t;
       PetscCheck(found >= 0 && found != PTYPE_WALL, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-                 "-body_force_types: '%s' is not fluid or solid (walls move as prescribed)", types[k]);
+                 "-body_force_types: '%s' is not fluid or solid or clot (walls move as prescribed)", types[k]);
       d->on_type[found] = PETSC_TRUE;
     }
   }
@@ -129,9 +129,10 @@ static PetscErrorCode body_force_view(module *self, sim *s, PetscViewer v) {
   body_force_data *d = self->data;
   PetscFunctionBeginUser;
   (void)s;
-  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2, on %s%s\n",
+  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2, on %s%s%s\n",
                                    d->F[0], d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity,
-                                   d->on_type[PTYPE_FLUID] ? "fluid " : "", d->on_type[PTYPE_SOLID] ? "solid" : ""));
+                                   d->on_type[PTYPE_FLUID] ? "fluid " : "", d->on_type[PTYPE_SOLID] ? "solid" : "",
+                                   d->on_type[PTYPE_CLOT] ? " clot" : ""));
   PetscFunctionReturn(0);
 }
 

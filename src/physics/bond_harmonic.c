@@ -1,5 +1,6 @@
 /* Module bond_harmonic: U = K (r - r0)^2 per bond (SPEC 2), K [J/m^2] and r0 [m]
- * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h.
+ * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. Bonds of
+ * the topology's run-time type (clots, agglomeration.c) are left to bond_clot.c.
  * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
 #include <math.h>
 #include "dmhs/sim.h"
@@ -41,8 +42,10 @@ static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
   const double *restrict mass = ps->mass;
   const double *restrict K = p->k, *restrict R0 = p->r0;
   double(*restrict a)[2] = ps->a;
+  const PetscInt skip = t->runtime_type;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
+    if (ty == skip) continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double fr = bond_harmonic_iact(K[ty], R0[ty], sqrt(d[0] * d[0] + d[1] * d[1]));
     const double fi = fr / mass[i], fj = fr / mass[j];
@@ -64,6 +67,7 @@ static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3])
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (ty == t->runtime_type) continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
     const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
@@ -83,6 +87,7 @@ static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) 
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (ty == t->runtime_type) continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
     local += t->bond_weight[b] * bond_harmonic_energy(p->k[ty], p->r0[ty], r);
   }

@@ -78,12 +78,13 @@ typedef struct {
   double K, rstar;
 } repulsion_args;
 
-/* Does the pair (i, j) repel? One fluid and one solid/wall; with bodies, also
- * two non-fluid particles of different bodies. */
+/* Does the pair (i, j) repel? One liquid (fluid or clot: a clot particle was
+ * liquid and stays among it) and one solid/wall; with bodies, also two solid
+ * or wall particles of different bodies. */
 static inline __attribute__((always_inline)) int repulsion_acts(int bodies, const PetscInt *type,
                                                                 const PetscInt *body, PetscInt i,
                                                                 PetscInt j) {
-  const int fi = type[i] == PTYPE_FLUID, fj = type[j] == PTYPE_FLUID;
+  const int fi = type[i] == PTYPE_FLUID || type[i] == PTYPE_CLOT, fj = type[j] == PTYPE_FLUID || type[j] == PTYPE_CLOT;
   if (fi != fj) return 1;
   return bodies && !fi && body[i] != body[j];
 }

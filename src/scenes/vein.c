@@ -44,6 +44,7 @@
 #include "dmhs/stress.h"
 #include "dmhs/vein_metrics.h"
 #include "dmhs/solid_load.h"
+#include "dmhs/agglomeration.h"
 #include "solid_strip.h"
 
 #define VEIN_DX_REF 1e-4 /* the published resolution [m] */
@@ -54,10 +55,64 @@ typedef struct {
   double fluid_mass_ref, solid_mass_ref;
   PetscInt wall_layers, crossing_interval;
   double probe_time;
-  module *body, *rep;
+  PetscBool clots; /* -vein_clots: module agglomeration */
+  module *body, *rep, *agg;
   vein_layout lay;
   vein_metrics *metrics;
 } vein_data;
+
+/* The extreme (largest when sign = +1, smallest when -1) of value[] over the
+ * owned liquid particles that started in the sinus, over all ranks (ties: the
+ * lower gid), skipping gid `skip`; -1 when there is none. */
+static PetscErrorCode vein_extreme_sinus(sim *s, const double *value, int sign, PetscInt64 skip,
+                                         PetscInt64 *gid) {
+  struct {
+    double v;
+    PetscInt64 gid;
+  } mine = {-INFINITY, -1}, *all;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+    if (s->ps.type[i] != PTYPE_FLUID || s->ps.tag[i] != VEIN_TAG_SINUS || s->ps.gid[i] == skip)
+      continue;
+    const double w = sign * value[i];
+    if (w > mine.v || (w == mine.v && s->ps.gid[i] < mine.gid)) {
+      mine.v = w;
+      mine.gid = s->ps.gid[i];
+    }
+  }
+  PetscCall(PetscMalloc1(s->size, &all));
+  PetscCallMPI(MPI_Allgather(&mine, (PetscMPIInt)sizeof(mine), MPI_BYTE, all,
+                             (PetscMPIInt)sizeof(mine), MPI_BYTE, s->comm));
+  *gid = -1;
+  double best = -INFINITY;
+  for (PetscMPIInt r = 0; r < s->size; r++)
+    if (all[r].gid >= 0 && (all[r].v > best || (all[r].v == best && all[r].gid < *gid))) {
+      best = all[r].v;
+      *gid = all[r].gid;
+    }
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+/* The thesis's two seeds after the warm-up: P1, the sinus-side liquid
+ * particle of peak total stress |sigma|; P2, the one of longest residence,
+ * the smallest displacement |x - x0| among those that started between
+ * leaflet and wall. */
+static PetscErrorCode vein_choose_seeds(sim *s, void *ctx, PetscInt *n, PetscInt64 gids[]) {
+  PetscFunctionBeginUser;
+  (void)ctx;
+  /* current neighbour values (ghosts are refreshed only at the next step's
+   * start): the stresses, hence the seeds, are then the same on any rank count */
+  PetscCall(sim_refresh_ghosts(s));
+  PetscCall(stress_compute(s));
+  PetscCall(vein_extreme_sinus(s, s->ps.stress_mag, +1, -1, &gids[0]));
+  PetscCall(vein_extreme_sinus(s, s->ps.displacement, -1, gids[0], &gids[1]));
+  PetscCheck(
+      gids[0] >= 0 && gids[1] >= 0, s->comm, PETSC_ERR_ARG_WRONG,
+      "vein: no liquid left in the sinus to seed clots (give -agglomeration_seeds x1,y1,...)");
+  *n = 2;
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   vein_data *v = self->data;
@@ -103,6 +158,11 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
       "Time at which the measurement point (peak stress, sinus side) is chosen [s] "
       "(0 = a quarter period, the forward peak)",
       NULL, v->probe_time, &v->probe_time, NULL));
+  PetscCall(PetscOptionsBool(
+      "-vein_clots",
+      "Grow clots from seed particles (module agglomeration, -agglomeration_*; seeds by "
+      "default P1, the sinus-side peak stress, and P2, the longest residence)",
+      NULL, v->clots, &v->clots, NULL));
   PetscOptionsEnd();
   PetscCheck(v->dx > 0 && v->width > 10 * v->dx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-vein_dx must be > 0 and -vein_width > 10 dx (got dx = %g m, W = %g m)", v->dx,
@@ -163,6 +223,12 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCall(sim_enable_module(s, "repulsion", &v->rep));
   PetscCall(repulsion_set_default(v->rep, 4e-4 * r * r, v->dx, 4, 2));
   PetscCall(repulsion_set_bodies(v->rep, PETSC_TRUE));
+  if (v->clots) {
+    PetscCall(sim_enable_module(s, "agglomeration", &v->agg));
+    /* R_max = 2.5e-4 m at the published dx, like every length of the scene */
+    PetscCall(agglomeration_set_defaults(v->agg, 2.5 * v->dx, -1));
+    PetscCall(agglomeration_set_seed_chooser(v->agg, vein_choose_seeds, v));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -1,0 +1,67 @@
+/* The clot bonds (agglomeration.c): U = K (r - r0_b)^2 for every local bond
+ * entry of the topology's run-time type, r0_b the bond's own rest length (its
+ * length when it was made, topology bond_r0), so that a new bond starts with
+ * zero energy and force. Same arithmetic as bond_harmonic (bond_iact.h). */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/agglomeration.h"
+#include "bond_iact.h"
+
+PetscErrorCode bond_clot_compute(sim *s, double K) {
+  const topology *t = s->topo;
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  if (t->runtime_type < 0)
+    PetscFunctionReturn(0);
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    if (t->bond_ltype[b] != t->runtime_type)
+      continue;
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1];
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double fr =
+        bond_harmonic_iact(K, t->bond_r0[t->bond_index[b]], sqrt(d[0] * d[0] + d[1] * d[1]));
+    const double fi = fr / ps->mass[i], fj = fr / ps->mass[j];
+    ps->a[i][0] += fi * d[0];
+    ps->a[i][1] += fi * d[1];
+    ps->a[j][0] -= fj * d[0];
+    ps->a[j][1] -= fj * d[1];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_clot_virial(sim *s, double K, double (*W)[3]) {
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  if (t->runtime_type < 0)
+    PetscFunctionReturn(0);
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    if (t->bond_ltype[b] != t->runtime_type)
+      continue;
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1];
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double fr = bond_harmonic_iact(K, t->bond_r0[t->bond_index[b]], hypot(d[0], d[1]));
+    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
+    for (int c = 0; c < 3; c++) {
+      W[i][c] += w[c];
+      W[j][c] += w[c];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+double bond_clot_energy_local(sim *s, double K) {
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  double e = 0;
+  if (t->runtime_type < 0)
+    return 0;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    if (t->bond_ltype[b] != t->runtime_type)
+      continue;
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1];
+    const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
+    e += t->bond_weight[b] * bond_harmonic_energy(K, t->bond_r0[t->bond_index[b]], r);
+  }
+  return e;
+}
