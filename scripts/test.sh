@@ -9,7 +9,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${DMHS_BUILD_DIR:-$repo/build}"
 cd "$build"
 if [ $# -eq 0 ]; then
-  ctest --output-on-failure -LE full
+  ctest --output-on-failure -j"$(nproc)" -LE full
 else
   ctest --output-on-failure "$@"
 fi

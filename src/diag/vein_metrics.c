@@ -178,13 +178,32 @@ static int vein_side_of(const vein_metrics *v, const domain *dom, int w, const d
 
 static PetscErrorCode vein_check_crossings(vein_metrics *v, sim *s, PetscBool count) {
   particles *ps = &s->ps;
+  double box[2][4]; /* per leaflet: centre x, y and half-widths, 4 dx beyond its particles */
   PetscFunctionBeginUser;
   PetscCall(vein_gather_leaflets(v, s));
+  for (int w = 0; w < 2; w++) {
+    const double(*x)[2] = v->leaf_x + (w ? v->n_leaf[0] : 0);
+    double lo[2] = {x[0][0], x[0][1]}, hi[2] = {x[0][0], x[0][1]};
+    for (PetscInt k = 1; k < v->n_leaf[w]; k++)
+      for (int d = 0; d < 2; d++) {
+        lo[d] = PetscMin(lo[d], x[k][d]);
+        hi[d] = PetscMax(hi[d], x[k][d]);
+      }
+    for (int d = 0; d < 2; d++) {
+      box[w][d] = 0.5 * (lo[d] + hi[d]);
+      box[w][2 + d] = 0.5 * (hi[d] - lo[d]) + 4 * v->lay.dx;
+    }
+  }
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_FLUID)
       continue;
     PetscInt now = 0;
     for (int w = 0; w < 2 && !now; w++) {
+      /* only particles near the leaflet can be beside it: a cheap box test first */
+      double d[2] = {ps->x[i][0] - box[w][0], ps->x[i][1] - box[w][1]};
+      domain_min_image(&s->dom, d);
+      if (fabs(d[0]) > box[w][2] || fabs(d[1]) > box[w][3])
+        continue;
       const int sd = vein_side_of(v, &s->dom, w, ps->x[i]);
       if (sd)
         now = (w + 1) * sd;
