@@ -127,36 +127,34 @@ static void vein_column_mid(const vein_metrics *v, int w, PetscInt c, double m[2
 /* Side of leaflet w a point is on (+-1), 0 when not beside it: nearest column
  * mid-point c (coarse search every 4th column, then +-4), local tangent from
  * columns c-1 .. c+1, within dx along it and 3 dx across. */
+/* Updates (best, cb) with the columns lo, lo + step, ... <= hi of leaflet w
+ * whose mid-point is nearer to p (squared distance, minimum image). */
+static void vein_nearest_column(const vein_metrics *v, const domain *dom, int w, const double p[2],
+                                PetscInt lo, PetscInt hi, PetscInt step, double *best,
+                                PetscInt *cb) {
+  for (PetscInt c = lo; c <= hi; c += step) {
+    double m[2], d[2];
+    vein_column_mid(v, w, c, m);
+    d[0] = p[0] - m[0];
+    d[1] = p[1] - m[1];
+    domain_min_image(dom, d);
+    const double r2 = d[0] * d[0] + d[1] * d[1];
+    if (r2 < *best) {
+      *best = r2;
+      *cb = c;
+    }
+  }
+}
+
 static int vein_side_of(const vein_metrics *v, const domain *dom, int w, const double p[2]) {
   const PetscInt nc = v->lay.leaflet[w].n_columns;
   const double dx = v->lay.dx;
-  double best = INFINITY, m[2], d[2];
+  double best = INFINITY, d[2];
   PetscInt cb = -1;
-  for (PetscInt c = 0; c < nc; c += 4) {
-    vein_column_mid(v, w, c, m);
-    d[0] = p[0] - m[0];
-    d[1] = p[1] - m[1];
-    domain_min_image(dom, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1];
-    if (r2 < best) {
-      best = r2;
-      cb = c;
-    }
-  }
+  vein_nearest_column(v, dom, w, p, 0, nc - 1, 4, &best, &cb);
   if (best > 25 * dx * dx + 16 * dx * dx)
     return 0; /* farther than ~6.4 dx from every 4th column */
-  const PetscInt lo = PetscMax(cb - 4, 0), hi = PetscMin(cb + 4, nc - 1);
-  for (PetscInt c = lo; c <= hi; c++) {
-    vein_column_mid(v, w, c, m);
-    d[0] = p[0] - m[0];
-    d[1] = p[1] - m[1];
-    domain_min_image(dom, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1];
-    if (r2 < best) {
-      best = r2;
-      cb = c;
-    }
-  }
+  vein_nearest_column(v, dom, w, p, PetscMax(cb - 4, 0), PetscMin(cb + 4, nc - 1), 1, &best, &cb);
   double ma[2], mb[2], mc[2];
   vein_column_mid(v, w, PetscMax(cb - 1, 0), ma);
   vein_column_mid(v, w, PetscMin(cb + 1, nc - 1), mb);
