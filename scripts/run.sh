@@ -34,3 +34,13 @@ if [ -f "$outdir/error.csv" ]; then
     /usr/bin/python3 "$repo/scripts/post/plot_channel.py" "$outdir"
   fi
 fi
+# the vein: geometry, fields at the peak flow, the sinus liquid per cycle, the
+# measurement point / inlet / gap history; with clots, their growth
+if [ -f "$outdir/vein.csv" ]; then
+  for p in geometry fields sinus probe inlet; do
+    /usr/bin/python3 "$repo/scripts/post/plot_vein_$p.py" "$outdir"
+  done
+  if [ -f "$outdir/clots.csv" ]; then
+    /usr/bin/python3 "$repo/scripts/post/plot_clots.py" "$outdir"
+  fi
+fi
