@@ -49,7 +49,7 @@ struct vein_metrics {
   PetscInt next_cycle;  /* next cycle whose sinus rows are due */
   /* history (replicated) of the measurement point, for the statistics */
   PetscInt n_hist, cap_hist;
-  double *hist_t, *hist_stress, *hist_disp;
+  double (*hist)[3]; /* per output row after the choice: t, |sigma|, |x - x0| */
   /* running extremes (replicated) */
   double u_mean_peak1, u_centre_peak1, u_mean_peak, u_centre_peak;
   double gap_min, gap_max, rho_dev_max, mach_max;
@@ -82,7 +82,7 @@ PetscErrorCode vein_metrics_destroy(vein_metrics **vp) {
   if (v->sinus)
     fclose(v->sinus);
   PetscCall(PetscFree(v->leaf_x));
-  PetscCall(PetscFree3(v->hist_t, v->hist_stress, v->hist_disp));
+  PetscCall(PetscFree(v->hist));
   PetscCall(PetscFree(*vp));
   PetscFunctionReturn(0);
 }
@@ -364,21 +364,12 @@ static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) 
 static PetscErrorCode vein_history_push(vein_metrics *v, double t, double stress, double disp) {
   PetscFunctionBeginUser;
   if (v->n_hist == v->cap_hist) {
-    const PetscInt cap = 2 * v->cap_hist + 64;
-    double *a, *b, *c;
-    PetscCall(PetscMalloc3(cap, &a, cap, &b, cap, &c));
-    PetscCall(PetscArraycpy(a, v->hist_t, v->n_hist));
-    PetscCall(PetscArraycpy(b, v->hist_stress, v->n_hist));
-    PetscCall(PetscArraycpy(c, v->hist_disp, v->n_hist));
-    PetscCall(PetscFree3(v->hist_t, v->hist_stress, v->hist_disp));
-    v->hist_t = a;
-    v->hist_stress = b;
-    v->hist_disp = c;
-    v->cap_hist = cap;
+    v->cap_hist = 2 * v->cap_hist + 64;
+    PetscCall(PetscRealloc(sizeof(*v->hist) * (size_t)v->cap_hist, &v->hist));
   }
-  v->hist_t[v->n_hist] = t;
-  v->hist_stress[v->n_hist] = stress;
-  v->hist_disp[v->n_hist++] = disp;
+  v->hist[v->n_hist][0] = t;
+  v->hist[v->n_hist][1] = stress;
+  v->hist[v->n_hist++][2] = disp;
   PetscFunctionReturn(0);
 }
 
@@ -464,13 +455,14 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
   PetscFunctionReturn(0);
 }
 
-static void vein_mean_std(const double *x, PetscInt n, double *mean, double *std) {
+/* Mean and sample standard deviation of x[0], x[stride], ... (n values). */
+static void vein_mean_std(const double *x, PetscInt n, PetscInt stride, double *mean, double *std) {
   double m = 0, q = 0;
   for (PetscInt k = 0; k < n; k++)
-    m += x[k];
+    m += x[k * stride];
   m = n ? m / n : NAN;
   for (PetscInt k = 0; k < n; k++)
-    q += (x[k] - m) * (x[k] - m);
+    q += (x[k * stride] - m) * (x[k * stride] - m);
   *mean = m;
   *std = n > 1 ? sqrt(q / (n - 1)) : (n == 1 ? 0 : NAN);
 }
@@ -480,7 +472,7 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
   double disp_mean, disp_std, peak_mean = NAN, peak_std = NAN, *peaks;
   PetscInt n_cycles = 0;
   PetscFunctionBeginUser;
-  vein_mean_std(v->hist_disp, v->n_hist, &disp_mean, &disp_std);
+  vein_mean_std(v->n_hist ? &v->hist[0][2] : NULL, v->n_hist, 3, &disp_mean, &disp_std);
   /* the peak of the probe's stress in every completed cycle it was followed through */
   const PetscInt max_cycles = T > 0 ? (PetscInt)floor(s->t / T + 1e-9) + 1 : 0;
   PetscCall(PetscMalloc1(max_cycles + 1, &peaks));
@@ -488,17 +480,17 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
     double best = -1;
     PetscInt rows = 0;
     for (PetscInt k = 0; k < v->n_hist; k++)
-      if (v->hist_t[k] > c * T + 1e-9 * T && v->hist_t[k] <= (c + 1) * T + 1e-9 * T) {
-        best = PetscMax(best, v->hist_stress[k]);
+      if (v->hist[k][0] > c * T + 1e-9 * T && v->hist[k][0] <= (c + 1) * T + 1e-9 * T) {
+        best = PetscMax(best, v->hist[k][1]);
         rows++;
       }
     /* a completed cycle, entirely after the probe was chosen */
     if (rows && (c + 1) * T <= s->t + 1e-9 * T && v->n_hist &&
-        v->hist_t[0] <= c * T + 0.25 * T + 1e-9 * T)
+        v->hist[0][0] <= c * T + 0.25 * T + 1e-9 * T)
       peaks[n_cycles++] = best;
   }
   if (n_cycles)
-    vein_mean_std(peaks, n_cycles, &peak_mean, &peak_std);
+    vein_mean_std(peaks, n_cycles, 1, &peak_mean, &peak_std);
   PetscCall(PetscFree(peaks));
   PetscCall(PetscPrintf(
       s->comm,
@@ -568,9 +560,7 @@ PetscErrorCode vein_metrics_checkpoint_write(vein_metrics *v, checkpoint_io *io)
   PetscCall(checkpoint_put_ints(io, "vein_ints", ints, 4));
   PetscCall(checkpoint_put_reals(io, "vein_reals", reals, 8));
   if (v->n_hist) {
-    PetscCall(checkpoint_put_reals(io, "vein_hist_t", v->hist_t, v->n_hist));
-    PetscCall(checkpoint_put_reals(io, "vein_hist_stress", v->hist_stress, v->n_hist));
-    PetscCall(checkpoint_put_reals(io, "vein_hist_disp", v->hist_disp, v->n_hist));
+    PetscCall(checkpoint_put_reals(io, "vein_hist", &v->hist[0][0], 3 * v->n_hist));
   }
   PetscFunctionReturn(0);
 }
@@ -595,14 +585,11 @@ PetscErrorCode vein_metrics_checkpoint_read(vein_metrics *v, sim *s, checkpoint_
   v->gap_max = reals[5];
   v->rho_dev_max = reals[6];
   v->mach_max = reals[7];
-  PetscCall(PetscFree3(v->hist_t, v->hist_stress, v->hist_disp));
-  v->n_hist = v->cap_hist = 0;
+  PetscCall(PetscFree(v->hist));
+  v->n_hist = v->cap_hist = n;
   if (n) {
-    PetscCall(PetscMalloc3(n, &v->hist_t, n, &v->hist_stress, n, &v->hist_disp));
-    v->n_hist = v->cap_hist = n;
-    PetscCall(checkpoint_get_reals(io, "vein_hist_t", v->hist_t, n));
-    PetscCall(checkpoint_get_reals(io, "vein_hist_stress", v->hist_stress, n));
-    PetscCall(checkpoint_get_reals(io, "vein_hist_disp", v->hist_disp, n));
+    PetscCall(PetscMalloc1(n, &v->hist));
+    PetscCall(checkpoint_get_reals(io, "vein_hist", &v->hist[0][0], 3 * n));
   }
   PetscFunctionReturn(0);
 }

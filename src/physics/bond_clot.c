@@ -6,6 +6,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/agglomeration.h"
 #include "bond_iact.h"
+#include "virial_iact.h"
 
 PetscErrorCode bond_clot_compute(sim *s, double K) {
   const topology *t = s->topo;
@@ -41,11 +42,7 @@ PetscErrorCode bond_clot_virial(sim *s, double K, double (*W)[3]) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1];
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_harmonic_iact(K, t->bond_r0[t->bond_index[b]], hypot(d[0], d[1]));
-    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
-    for (int c = 0; c < 3; c++) {
-      W[i][c] += w[c];
-      W[j][c] += w[c];
-    }
+    virial_pair_add(W, i, j, fr, d);
   }
   PetscFunctionReturn(0);
 }

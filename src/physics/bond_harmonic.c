@@ -8,6 +8,7 @@
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
 #include "bond_iact.h"
+#include "virial_iact.h"
 
 static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
   bond_params *p = self->data;
@@ -70,11 +71,7 @@ static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3])
     if (ty == t->runtime_type) continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
-    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
-    for (int c = 0; c < 3; c++) {
-      W[i][c] += w[c];
-      W[j][c] += w[c];
-    }
+    virial_pair_add(W, i, j, fr, d);
   }
   PetscFunctionReturn(0);
 }

@@ -16,6 +16,7 @@
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
 #include "bond_iact.h"
+#include "virial_iact.h"
 
 typedef struct {
   bond_params p; /* first: bond_set_default writes through it */
@@ -171,11 +172,7 @@ static PetscErrorCode bond_nonlinear_virial(module *self, sim *s, double (*W)[3]
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_nonlinear_iact(p->k[ty], p->r0[ty], p->rmax[ty], hypot(d[0], d[1]));
-    const double w[3] = {-0.5 * fr * d[0] * d[0], -0.5 * fr * d[0] * d[1], -0.5 * fr * d[1] * d[1]};
-    for (int c = 0; c < 3; c++) {
-      W[i][c] += w[c];
-      W[j][c] += w[c];
-    }
+    virial_pair_add(W, i, j, fr, d);
   }
   PetscFunctionReturn(0);
 }

@@ -19,6 +19,7 @@
 #include "dmhs/integrate.h"
 #include "dmhs/fields.h"
 #include "repulsion_iact.h"
+#include "virial_iact.h"
 
 typedef struct {
   double K, rstar;
@@ -171,11 +172,7 @@ static PetscErrorCode repulsion_virial(module *self, sim *s, double (*W)[3]) {
     const double r2 = r[0] * r[0] + r[1] * r[1];
     if (r2 >= rs2) continue;
     const double fr = repulsion_iact(d->K, d->rstar, (int)d->p1, (int)d->p2, r2);
-    const double w[3] = {-0.5 * fr * r[0] * r[0], -0.5 * fr * r[0] * r[1], -0.5 * fr * r[1] * r[1]};
-    for (int c = 0; c < 3; c++) {
-      W[i][c] += w[c];
-      W[j][c] += w[c];
-    }
+    virial_pair_add(W, i, j, fr, r);
   }
   PetscFunctionReturn(0);
 }

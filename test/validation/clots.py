@@ -16,60 +16,11 @@ DIR's byte for byte.
 """
 import argparse
 import glob
-import math
 import os
-import subprocess
-import sys
+
+from case_common import compare, fail, opt_value, read_csv, run
 
 CSVS = ["clots.csv", "vein.csv"]
-
-
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
-def run(args, outdir, extra, ranks):
-    os.makedirs(outdir, exist_ok=True)
-    cmd = [args.exe, "-options_file", args.opts, "-output_dir", outdir, "-quiet"] + extra
-    if ranks > 1:
-        cmd = args.mpirun.split() + ["-n", str(ranks)] + cmd
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    print(p.stdout[-2000:])
-    if p.returncode != 0:
-        fail(f"dmhs exited with {p.returncode}: {' '.join(cmd)}")
-
-
-def read_csv(path):
-    if not os.path.isfile(path) or os.path.getsize(path) == 0:
-        fail(f"{path} is missing or empty")
-    lines = [ln for ln in open(path).read().splitlines() if not ln.startswith("#")]
-    names = lines[0].split(",")
-    rows = []
-    for ln in lines[1:]:
-        cells = ln.split(",")
-        if len(cells) != len(names):
-            fail(f"{path}: row '{ln}' has {len(cells)} values for {len(names)} columns")
-        row = []
-        for c in cells:
-            try:
-                v = float(c) if c != "" else None
-            except ValueError:
-                fail(f"{path}: '{c}' is not a number")
-            if v is not None and not math.isfinite(v):
-                fail(f"{path}: non-finite value in '{ln}'")
-            row.append(v)
-        rows.append(row)
-    return names, rows
-
-
-def opt_value(path, name):
-    val = None
-    for ln in open(path):
-        parts = ln.split("#")[0].split()
-        if parts and parts[0] == name:
-            val = parts[1] if len(parts) > 1 else ""
-    return val
 
 
 def check_run(args):
@@ -118,14 +69,6 @@ def check_run(args):
                   f"of {len(pairs)}")
 
 
-def compare(a, b):
-    for c in CSVS:
-        pa, pb = os.path.join(a, c), os.path.join(b, c)
-        if open(pa, "rb").read() != open(pb, "rb").read():
-            fail(f"{pa} differs from {pb}")
-        print(f"  {c}: identical to {pb}")
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--exe", required=True)
@@ -139,13 +82,13 @@ def main():
     p.add_argument("--compare")
     args = p.parse_args()
     if args.mode == "run":
-        run(args, args.outdir, [], args.ranks)
+        run(args, args.outdir, [], args.ranks, tail=2000)
     else:
         run(args, args.outdir, ["-t_end", str(args.t_stop)], args.ranks)
         run(args, args.outdir, ["-restart", os.path.join(args.outdir, "checkpoint.h5")], args.restart_ranks)
     check_run(args)
     if args.compare:
-        compare(args.outdir, args.compare)
+        compare(args.outdir, args.compare, CSVS)
     print("PASS")
 
 

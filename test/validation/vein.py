@@ -14,51 +14,11 @@
   and compares the three CSVs byte for byte with --compare DIR (the
   uninterrupted run).
 """
-import argparse, math, os, subprocess, sys
+import argparse, math, os
+
+from case_common import compare as compare_files, fail, opt_value, read_csv, run
 
 CSVS = ["vein.csv", "vein-sinus.csv", "vein-summary.csv"]
-
-
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
-def run(args, outdir, extra, ranks):
-    os.makedirs(outdir, exist_ok=True)
-    cmd = [args.exe, "-options_file", args.opts, "-output_dir", outdir, "-quiet"] + extra
-    if ranks > 1:
-        cmd = args.mpirun.split() + ["-n", str(ranks)] + cmd
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    print(p.stdout[-2500:])
-    if p.returncode != 0:
-        fail(f"dmhs exited with {p.returncode}: {' '.join(cmd)}")
-
-
-def read_csv(path):
-    if not os.path.isfile(path) or os.path.getsize(path) == 0:
-        fail(f"{path} is missing or empty")
-    with open(path) as f:
-        lines = [l.rstrip("\n") for l in f if not l.startswith("#")]
-    names = lines[0].split(",")
-    rows = []
-    for n, l in enumerate(lines[1:], 2):
-        cells = l.split(",")
-        if len(cells) != len(names):
-            fail(f"{path}:{n}: {len(cells)} cells, header has {len(names)}")
-        row = []
-        for c in cells:
-            if c == "":
-                row.append(None)  # an empty cell is 'not defined yet', never a value
-                continue
-            v = float(c)
-            if not math.isfinite(v):
-                fail(f"{path}:{n}: non-finite value {c}")
-            row.append(v)
-        rows.append(row)
-    if not rows:
-        fail(f"{path} has no rows")
-    return names, rows
 
 
 def read_summary(path):
@@ -89,19 +49,6 @@ def col(names, rows, name):
         fail(f"column {name} missing")
     k = names.index(name)
     return [r[k] for r in rows]
-
-
-def opt_value(path, name):
-    """The last value of an option in an options file (and the files it includes)."""
-    value = None
-    for line in open(path):
-        w = line.split()
-        if len(w) >= 2 and w[0] == "-options_file":
-            inner = opt_value(w[1], name)
-            value = inner if inner is not None else value
-        elif len(w) >= 2 and w[0] == name:
-            value = w[1]
-    return value
 
 
 def mode_run(args):
@@ -141,25 +88,15 @@ def mode_run(args):
     if not probe or len(set(probe)) != 1:
         fail("the measurement point was not chosen (or changed)")
     if args.compare:
-        compare(args.outdir, args.compare)
+        compare_files(args.outdir, args.compare, CSVS)
     print("PASS")
 
 
-def compare(a, b):
-    for c in CSVS:
-        pa, pb = os.path.join(a, c), os.path.join(b, c)
-        if open(pa, "rb").read() != open(pb, "rb").read():
-            fail(f"{pa} differs from {pb}")
-        print(f"  {c}: identical to {pb}")
-
-
 def mode_restart(args):
-    first = os.path.join(args.outdir, "first")
     run(args, args.outdir, args.extra.split() + ["-t_end", str(args.t_stop)], args.ranks)
     run(args, args.outdir, args.extra.split() + ["-restart", os.path.join(args.outdir, "checkpoint.h5")],
         args.restart_ranks)
-    del first
-    compare(args.outdir, args.compare)
+    compare_files(args.outdir, args.compare, CSVS)
     print("PASS")
 
 
