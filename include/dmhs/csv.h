@@ -16,6 +16,10 @@ struct sim;
 /* Rank 0: opens <output_dir>/<name> as above; header (one or more lines, each
  * ending in '\n') is written only when the file is started. Other ranks get NULL. */
 PetscErrorCode csv_open(struct sim *s, const char *name, const char *header, FILE **out);
+/* The same for a file whose first column is not t (dt.csv: the step): a
+ * restart keeps the rows whose first field is <= keep. */
+PetscErrorCode csv_open_keeping(struct sim *s, const char *name, const char *header, double keep,
+                                FILE **out);
 /* Rank 0: writes one row (printf format, ending in '\n') and flushes it. A
  * non-finite value in the row (nan, inf) is refused, naming the file, the
  * column and the row, before anything is written; a failed write or flush is

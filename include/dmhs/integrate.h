@@ -7,8 +7,6 @@
 struct sim;
 
 #define DT_LIMITS_MAX 32
-/* -dt 0: dt = this fraction of the smallest limit */
-#define DT_AUTO_FRACTION 0.8
 typedef struct dt_limit {
   char name[32];    /* e.g. "sph sound speed" */
   char formula[96]; /* what was evaluated, naming the length it uses */

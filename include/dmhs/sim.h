@@ -15,6 +15,7 @@
 #include "dmhs/io.h"
 #include "dmhs/topology.h"
 #include "dmhs/options.h" /* checked option readers, in every module */
+#include "dmhs/timestep.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -33,6 +34,7 @@ typedef struct sim {
   char output_dir[PETSC_MAX_PATH_LEN];
   PetscBool quiet;
   preflight_action preflight;
+  timestep ts; /* fixed-dt check or automatic dt, before every step (timestep.c) */
 
   /* state */
   domain dom;

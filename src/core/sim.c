@@ -2,7 +2,7 @@
  * pre-flight checks), the step loop and teardown.
  *
  * One step:
- *   first kick + drift -> migrate (wrap / owners) -> ghosts + pair list
+ *   time-step limits (check or adapt dt) -> first kick + drift -> migrate (wrap / owners) -> ghosts + pair list
  *   -> modules' compute (forces, density rates) -> second kick
  *   -> state check (stop before any NaN is written) -> scene diagnostics -> progress */
 #include <errno.h>
@@ -27,8 +27,6 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
   PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
   PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, NULL));
-  PetscCall(PetscOptionsReal("-dt", "Time step [s] (0 = automatic: 0.8 x the smallest stability limit)", NULL, s->dt,
-                             &s->dt, NULL));
   PetscCall(PetscOptionsEnum("-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
                              preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
   PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL, s->output_dir,
@@ -43,10 +41,10 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
                              "and pairs every step)",
                              NULL, s->skin_ratio, &s->skin_ratio, NULL));
   PetscOptionsEnd();
+  PetscCall(timestep_set_from_options(s));
   PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)", s->t_end);
   PetscCheck(s->skin_ratio >= 0 && s->skin_ratio <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
-  PetscCheck(s->dt >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt must be >= 0 (got %g; 0 = automatic)", s->dt);
   PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_interval must be >= 0 (got %g)",
              s->output_interval);
   PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -345,9 +343,9 @@ PetscErrorCode sim_run(sim *s) {
   s->loop_start_wtime = MPI_Wtime();
   /* stop at the step nearest t_end */
   while (s->t < s->t_end - 0.5 * s->dt) {
+    PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
     PetscCall(integrate_first_half(s));
-    s->step++;
-    s->t = s->step * s->dt; /* no accumulated round-off in t */
+    timestep_advance(s);
     PetscCall(sim_update_neighbours(s, s->force_rebuild));
     s->force_rebuild = PETSC_FALSE;
     PetscCall(sim_compute_forces(s));
@@ -377,6 +375,7 @@ PetscErrorCode sim_run(sim *s) {
   PetscCall(progress_summary(s));
   PetscCall(dump_final(s)); /* mpi */
   PetscCall(migrate_report(&s->mig, s)); /* mpi */
+  PetscCall(timestep_finish(s));
   PetscCall(io_finish(s)); /* io: final checkpoint, run.json */
   PetscFunctionReturn(0);
 }

@@ -262,6 +262,9 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_int64s(tmp, fid, "snapshot_index", &snapshot_index, 1));
     PetscCall(h5io_put_reals(tmp, fid, "t", &s->t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "dt", &s->dt, 1));
+    const PetscInt64 step_anchor = s->ts.step_anchor;
+    PetscCall(h5io_put_reals(tmp, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
+    PetscCall(h5io_put_int64s(tmp, fid, "dt_anchor_step", &step_anchor, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "body_accel", s->body_accel, DMHS_DIM));
@@ -424,9 +427,16 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_int64s(path, fid, "snapshot_index", &snapshot_index, 1));
   PetscCall(h5io_get_reals(path, fid, "dt", &s->dt, 1));
   PetscCall(h5io_get_reals(path, fid, "t", &s->t, 1));
+  PetscInt64 step_anchor;
+  PetscCall(h5io_get_reals(path, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
+  PetscCall(h5io_get_int64s(path, fid, "dt_anchor_step", &step_anchor, 1));
+  s->ts.step_anchor = (PetscInt)step_anchor;
   PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
   PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
   PetscCall(h5io_get_reals(path, fid, "body_accel", s->body_accel, DMHS_DIM));
+  PetscCheck(s->ts.step_anchor >= 0 && s->ts.step_anchor <= step, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")", path,
+             s->ts.step_anchor, step);
   PetscCheck(step >= 0 && s->dt > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
   s->step = (PetscInt)step;

@@ -53,6 +53,12 @@ static int csv_truncate(const char *path, const char *tmp, double t_keep, int *f
 }
 
 PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out) {
+  PetscFunctionBeginUser;
+  PetscCall(csv_open_keeping(s, name, header, s->io.restart_t + 0.5 * s->dt, out));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, double keep, FILE **out) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   int found = 0;
   PetscFunctionBeginUser;
@@ -62,10 +68,10 @@ PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out
   PetscCall(sim_output_path(s, name, path, sizeof(path)));
   if (s->io.restarted) {
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-    const int err = csv_truncate(path, tmp, s->io.restart_t + 0.5 * s->dt, &found);
+    const int err = csv_truncate(path, tmp, keep, &found);
     PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "cannot continue %s after the restart (keeping its rows up to t = %g s): %s", path,
-               s->io.restart_t, strerror(err));
+               "cannot continue %s after the restart (keeping its rows with a first field up to %g): %s",
+               path, keep, strerror(err));
   }
   *out = fopen(path, found ? "a" : "w");
   PetscCheck(*out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,

@@ -26,9 +26,9 @@ PetscErrorCode progress_print(sim *s) {
   const double left = s->t_end - s->t > 0 ? s->t_end - s->t : 0.0;
   const double eta = done > 0 ? elapsed * left / done : 0.0;
   PetscCall(PetscPrintf(s->comm,
-                        "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s  particle-steps/s %.3e  ETA %7.1f s  "
+                        "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s (%s)  particle-steps/s %.3e  ETA %7.1f s  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",
-                        s->step, s->t, s->dt, rate, eta, sqrt(global[0]), global[1], s->part.imbalance));
+                        s->step, s->t, s->dt, s->ts.binding[0] ? s->ts.binding : "no limit", rate, eta, sqrt(global[0]), global[1], s->part.imbalance));
   PetscFunctionReturn(0);
 }
 

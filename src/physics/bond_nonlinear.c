@@ -20,7 +20,7 @@
 
 typedef struct {
   bond_params p; /* first: bond_set_default writes through it */
-  PetscBool warned_stretch, warned_dt;
+  PetscBool warned_stretch;
 } bond_nonlinear_data;
 
 static PetscErrorCode bond_nonlinear_set_from_options(module *self, sim *s) {
@@ -124,24 +124,6 @@ static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
                           "this warning is printed once)\n",
                           ps->gid[i], ps->gid[j], worst, s->step, s->t));
     d->warned_stretch = PETSC_TRUE;
-  }
-  /* the stiffness at the current largest stretch against dt (the pre-flight
-   * report saw the stretch at t = 0 only) */
-  const double limit = bond_nonlinear_limit(p, ty, worst);
-  if (s->dt > limit * (1.0 + 1e-12)) {
-    PetscCheck(s->preflight == PREFLIGHT_WARN, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-               "step %" PetscInt_FMT ", t = %g s: dt = %g s exceeds the nonlinear bond limit %g s "
-               "(0.2 sqrt(m/k_eff) at the largest stretch %.3f r_max, bond gid %" PetscInt64_FMT "-%" PetscInt64_FMT
-               "); lower -dt, or -preflight warn to run on",
-               s->step, s->t, s->dt, limit, worst, ps->gid[i], ps->gid[j]);
-    if (!d->warned_dt) {
-      PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "WARNING: step %" PetscInt_FMT ": dt = %g s exceeds the nonlinear bond limit %g s at "
-                            "stretch %.3f r_max (bond gid %" PetscInt64_FMT "-%" PetscInt64_FMT
-                            "); continuing (-preflight warn), printed once\n",
-                            s->step, s->dt, limit, worst, ps->gid[i], ps->gid[j]));
-      d->warned_dt = PETSC_TRUE;
-    }
   }
   PetscFunctionReturn(0);
 }

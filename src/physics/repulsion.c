@@ -18,6 +18,7 @@
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
 #include "dmhs/fields.h"
+#include "dmhs/checkpoint.h"
 #include "repulsion_iact.h"
 #include "virial_iact.h"
 
@@ -25,6 +26,7 @@ typedef struct {
   double K, rstar;
   PetscInt p1, p2;
   PetscBool bodies; /* also between different solid bodies */
+  double r2_min;    /* closest approach of a repelling pair at the last compute [m^2] (inf: none) */
 } repulsion_data;
 
 PetscErrorCode repulsion_set_bodies(module *m, PetscBool on) {
@@ -90,20 +92,23 @@ static inline __attribute__((always_inline)) int repulsion_acts(int bodies, cons
   return bodies && !fi && body[i] != body[j];
 }
 
-static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2, int bodies,
-                                                                  const repulsion_args *A) {
+/* Returns the smallest r^2 of a repelling pair (the stiffness there bounds dt). */
+static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int p2, int bodies,
+                                                                    const repulsion_args *A) {
   const PetscInt *restrict pi = A->pi, *restrict pj = A->pj, *restrict type = A->type,
                            *restrict body = A->body;
   const double(*restrict x)[2] = A->x;
   const double *restrict mass = A->mass;
   double(*restrict a)[2] = A->a;
   const double K = A->K, rstar = A->rstar, rs2 = rstar * rstar;
+  double r2_min = INFINITY;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     if (!repulsion_acts(bodies, type, body, i, j)) continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r2 = d[0] * d[0] + d[1] * d[1];
     if (r2 >= rs2) continue;
+    r2_min = r2 < r2_min ? r2 : r2_min;
     const double fr = repulsion_iact(K, rstar, p1, p2, r2);
     const double fi = fr / mass[i], fj = fr / mass[j];
     a[i][0] += fi * d[0];
@@ -111,14 +116,15 @@ static inline __attribute__((always_inline)) void repulsion_sweep(int p1, int p2
     a[j][0] -= fj * d[0];
     a[j][1] -= fj * d[1];
   }
+  return r2_min;
 }
 
-static void sweep_4_2(const repulsion_args *A) { repulsion_sweep(4, 2, 0, A); }
-static void sweep_12_6(const repulsion_args *A) { repulsion_sweep(12, 6, 0, A); }
-static void sweep_4_2_bodies(const repulsion_args *A) { repulsion_sweep(4, 2, 1, A); }
+static double sweep_4_2(const repulsion_args *A) { return repulsion_sweep(4, 2, 0, A); }
+static double sweep_12_6(const repulsion_args *A) { return repulsion_sweep(12, 6, 0, A); }
+static double sweep_4_2_bodies(const repulsion_args *A) { return repulsion_sweep(4, 2, 1, A); }
 
 static PetscErrorCode repulsion_compute(module *self, sim *s) {
-  const repulsion_data *d = self->data;
+  repulsion_data *d = self->data;
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.repulsion, 0, 0, 0, 0));
@@ -133,11 +139,11 @@ static PetscErrorCode repulsion_compute(module *self, sim *s) {
                             .K = d->K,
                             .rstar = d->rstar};
   if (d->bodies) {
-    if (d->p1 == 4 && d->p2 == 2) sweep_4_2_bodies(&A);
-    else repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
-  } else if (d->p1 == 4 && d->p2 == 2) sweep_4_2(&A);
-  else if (d->p1 == 12 && d->p2 == 6) sweep_12_6(&A);
-  else repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
+    if (d->p1 == 4 && d->p2 == 2) d->r2_min = sweep_4_2_bodies(&A);
+    else d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
+  } else if (d->p1 == 4 && d->p2 == 2) d->r2_min = sweep_4_2(&A);
+  else if (d->p1 == 12 && d->p2 == 6) d->r2_min = sweep_12_6(&A);
+  else d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
   PetscCall(PetscLogFlops(10.0 * (double)s->cel.n_pairs));
   PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -179,20 +185,30 @@ static PetscErrorCode repulsion_virial(module *self, sim *s, double (*W)[3]) {
 
 static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
   const repulsion_data *d = self->data;
-  double local[2] = {INFINITY, INFINITY}, m[2];
+  double local[3] = {INFINITY, INFINITY, d->r2_min}, m[3];
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
     if (s->ps.type[i] == PTYPE_FLUID) local[0] = PetscMin(local[0], s->ps.mass[i]);
     if (s->ps.type[i] == PTYPE_SOLID) local[1] = PetscMin(local[1], s->ps.mass[i]);
   }
-  PetscCallMPI(MPI_Allreduce(local, m, 2, MPI_DOUBLE, MPI_MIN, s->comm));
+  PetscCallMPI(MPI_Allreduce(local, m, 3, MPI_DOUBLE, MPI_MIN, s->comm));
   if (!isfinite(m[0]) || d->K <= 0) PetscFunctionReturn(0);
   /* against a wall the fluid particle moves alone; against a solid, both do;
    * two solids of different bodies: half the solid mass */
   double mu = isfinite(m[1]) ? m[0] * m[1] / (m[0] + m[1]) : m[0];
   if (d->bodies && isfinite(m[1])) mu = PetscMin(mu, 0.5 * m[1]);
-  const double k = d->K * (double)(d->p1 - d->p2) / (d->rstar * d->rstar);
-  PetscCall(dt_limits_add(l, "repulsion", "0.2 sqrt(mu/k), k = K (p1-p2)/r*^2, mu reduced mass",
+  /* -dF/dr = K [(p1+1) s^p1 - (p2+1) s^p2]/r^2 with s = r* over r: K (p1-p2)/r*^2 at r*,
+   * stiffer at the closest approach of the last force evaluation */
+  double k = d->K * (double)(d->p1 - d->p2) / (d->rstar * d->rstar);
+  if (isfinite(m[2]) && m[2] > 0) {
+    const double r = sqrt(m[2]), sr = d->rstar / r;
+    const double k_close = d->K *
+                           ((double)(d->p1 + 1) * repulsion_ipow(sr, (int)d->p1) -
+                            (double)(d->p2 + 1) * repulsion_ipow(sr, (int)d->p2)) /
+                           m[2];
+    k = PetscMax(k, k_close);
+  }
+  PetscCall(dt_limits_add(l, "repulsion", "0.2 sqrt(mu/k), k = -dF/dr at the closest approach (>= r*)",
                           SPRING_DT_FACTOR * sqrt(mu / k)));
   PetscFunctionReturn(0);
 }
@@ -214,6 +230,26 @@ static PetscErrorCode repulsion_destroy(module *self) {
   PetscFunctionReturn(0);
 }
 
+/* The closest approach of the last force evaluation bounds the next dt: a
+ * restart (which does not evaluate forces again) needs it. Stored as the
+ * global value, so any rank count reads the same. */
+static PetscErrorCode repulsion_checkpoint_write(module *self, sim *s, struct checkpoint_io *io) {
+  const repulsion_data *d = self->data;
+  double r2_min;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&d->r2_min, &r2_min, 1, MPI_DOUBLE, MPI_MIN, s->comm));
+  PetscCall(checkpoint_put_reals(io, "r2_min", &r2_min, 1));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode repulsion_checkpoint_read(module *self, sim *s, struct checkpoint_io *io) {
+  repulsion_data *d = self->data;
+  PetscFunctionBeginUser;
+  (void)s;
+  PetscCall(checkpoint_get_reals(io, "r2_min", &d->r2_min, 1));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode repulsion_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
@@ -226,6 +262,8 @@ PetscErrorCode repulsion_module_create(module **m) {
   (*m)->destroy = repulsion_destroy;
   (*m)->energy = repulsion_energy_sum;
   (*m)->virial = repulsion_virial;
+  (*m)->checkpoint_write = repulsion_checkpoint_write;
+  (*m)->checkpoint_read = repulsion_checkpoint_read;
   PetscCall(PetscNew((repulsion_data **)&(*m)->data));
   /* the vein case's coupling (SPEC 4.3) */
   PetscCall(repulsion_set_default(*m, 4e-4, 1e-4, 4, 2));

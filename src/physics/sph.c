@@ -85,17 +85,26 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
 static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
   const sph_params *sp = &s->sph;
   const double hs = 0.5 * sp->h;
-  double vmax = 0.0, vmax_global;
+  double local[2] = {0.0, 0.0}, global[2]; /* max|v| (all), max|a| (liquid) */
   PetscFunctionBeginUser;
   (void)self;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    vmax = PetscMax(vmax, PetscSqrtReal(s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]));
-  PetscCallMPI(MPI_Allreduce(&vmax, &vmax_global, 1, MPI_DOUBLE, MPI_MAX, s->comm));
+  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+    local[0] = PetscMax(local[0], PetscSqrtReal(s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]));
+    if (s->ps.type[i] == PTYPE_FLUID)
+      local[1] = PetscMax(local[1], PetscSqrtReal(s->ps.a[i][0] * s->ps.a[i][0] + s->ps.a[i][1] * s->ps.a[i][1]));
+  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
+  const double vmax_global = global[0];
   /* Monaghan's artificial viscosity widens the signal speed by 1.2 (alpha c0 + beta max|v|) */
   const double signal = sp->c0 + vmax_global + 1.2 * (sp->av_alpha * sp->c0 + sp->av_beta * vmax_global);
   PetscCall(dt_limits_add(l, "sph sound speed", "0.25 h_s/(c0 + max|v| [+ AV]), h_s = h/2", 0.25 * hs / signal));
   if (sp->nu > 0)
     PetscCall(dt_limits_add(l, "sph viscosity", "0.125 h_s^2/nu, h_s = h/2", 0.125 * hs * hs / sp->nu));
+  /* Monaghan's force criterion on the accelerations of the last force
+   * evaluation (none before the first one) */
+  if (global[1] > 0)
+    PetscCall(dt_limits_add(l, "sph acceleration", "0.25 sqrt(h_s/max|a|), liquid, h_s = h/2",
+                            0.25 * PetscSqrtReal(hs / global[1])));
   PetscFunctionReturn(0);
 }
 

@@ -2,7 +2,8 @@
 # rigid leaflet angles, stiff bonds, the highest viscosity of the studies and a
 # strong drive must run stably with the automatic time step (-dt 0) and keep
 # the liquid out of the solid; a stiff bond at a fixed dt is refused before
-# step 0; a nonlinear bond whose stiffness outgrows dt stops the run naming it.
+# step 0; a nonlinear bond whose stiffness outgrows a fixed dt stops the run
+# naming it, and with -dt 0 the run follows it to the end.
 set(DMHS_EXT_OUT ${CMAKE_BINARY_DIR}/test-output/extreme)
 set(EXT_FLAP -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts -quiet -checkpoint_at_end false
     -output_interval 0.005)
@@ -25,9 +26,18 @@ add_test(NAME extreme_stiff_bonds_refused COMMAND ${DMHS_EXPECT_FAIL}
   ${DMHS_EXE} ${EXT_FLAP} -bond_k 1e8 -dt 1e-5 -t_end 0.001 -output_dir ${DMHS_EXT_OUT}/refused)
 set_tests_properties(extreme_stiff_bonds_refused PROPERTIES LABELS validation TIMEOUT 60)
 
+# The nonlinear bond near r_max: its stiffness grows with the stretch. At a
+# fixed dt (0.8 x its limit at rest) the run stops when the stretch makes the
+# limit fall below dt, naming it; with -dt 0 dt follows it down (1.7e-6 s from
+# 7.2e-6 s, dt.csv) and the run reaches t_end.
+set(EXT_NONLINEAR -bond_style nonlinear -bond_k 1e-6 -bond_rmax 2e-5 -body_force_amplitude 20 -t_end 0.05)
 add_test(NAME extreme_nonlinear_bond_outgrows_dt COMMAND ${DMHS_EXPECT_FAIL}
-  "exceeds the nonlinear bond limit .* at the largest stretch 0[.][0-9]+ r_max, bond gid [0-9]+-[0-9]+"
+  "dt = 7.155e-06 s exceeds the bond nonlinear limit .* at max stretch 0[.][0-9]+ r_max[)] that the state now sets"
   --no-nan ${DMHS_EXT_OUT}/nonlinear --
-  ${DMHS_EXE} ${EXT_FLAP} -dt 0 -bond_style nonlinear -bond_k 1e-6 -bond_rmax 2e-5 -body_force_amplitude 20
-  -t_end 0.05 -output_dir ${DMHS_EXT_OUT}/nonlinear)
+  ${DMHS_EXE} ${EXT_FLAP} -dt 7.155e-6 ${EXT_NONLINEAR} -output_dir ${DMHS_EXT_OUT}/nonlinear)
 set_tests_properties(extreme_nonlinear_bond_outgrows_dt PROPERTIES LABELS validation TIMEOUT 60)
+dmhs_extreme_ok(nonlinear_bond_adapts ${EXT_NONLINEAR})
+add_test(NAME extreme_nonlinear_bond_adapts_dt_csv COMMAND ${DMHS_PYTHON}
+  ${CMAKE_CURRENT_LIST_DIR}/dt_csv.py ${DMHS_EXT_OUT}/nonlinear_bond_adapts --min-changes 10 --limit "bond nonlinear")
+set_tests_properties(extreme_nonlinear_bond_adapts_dt_csv PROPERTIES LABELS validation TIMEOUT 60
+  DEPENDS extreme_nonlinear_bond_adapts)

@@ -1,0 +1,201 @@
+/* Time-step control: the limits re-evaluated before every step, the fixed-dt
+ * check, the automatic dt with its band, growth bound and floor, dt.csv and
+ * the step's time (see timestep.h). */
+#include <math.h>
+#include "dmhs/sim.h"
+#include "dmhs/integrate.h"
+#include "dmhs/timestep.h"
+#include "dmhs/csv.h"
+
+PetscErrorCode timestep_set_from_options(sim *s) {
+  timestep *ts = &s->ts;
+  PetscBool safety_set, growth_set, min_set;
+  PetscFunctionBeginUser;
+  ts->safety = DT_SAFETY_DEFAULT;
+  ts->growth = DT_GROWTH_DEFAULT;
+  ts->dt_min = 0;
+  PetscOptionsBegin(s->comm, NULL, "dmhs time stepping", NULL);
+  PetscCall(PetscOptionsReal(
+      "-dt",
+      "Time step [s] (0 = automatic: follows -dt_safety x the smallest stability limit, "
+      "re-evaluated every step)",
+      NULL, s->dt, &s->dt, NULL));
+  PetscCall(PetscOptionsReal("-dt_safety", "With -dt 0: dt as a fraction of the smallest limit [1]",
+                             NULL, ts->safety, &ts->safety, &safety_set));
+  PetscCall(PetscOptionsReal("-dt_growth",
+                             "With -dt 0: largest growth of dt from one step to the next [1]", NULL,
+                             ts->growth, &ts->growth, &growth_set));
+  PetscCall(PetscOptionsReal(
+      "-dt_min",
+      "With -dt 0: the run stops when dt would fall below this [s] (0 = 1e-3 x the first "
+      "automatic dt)",
+      NULL, ts->dt_min, &ts->dt_min, &min_set));
+  PetscOptionsEnd();
+  PetscCheck(s->dt >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-dt must be >= 0 (got %g; 0 = automatic)", s->dt);
+  PetscCheck(ts->safety > 0 && ts->safety <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-dt_safety must be in (0, 1] (got %g)", ts->safety);
+  PetscCheck(ts->growth >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt_growth must be >= 1 (got %g)",
+             ts->growth);
+  PetscCheck(ts->dt_min >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt_min must be >= 0 s (got %g)",
+             ts->dt_min);
+  /* a scene may still pick its own default dt: which options belong to the
+   * automatic dt is checked once dt is known (timestep_choose_first) */
+  ts->adaptive = (safety_set || growth_set || min_set) ? PETSC_TRUE
+                                                       : PETSC_FALSE; /* "was one given" for now */
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode timestep_collect_limits(sim *s, dt_limits *l) {
+  PetscFunctionBeginUser;
+  l->n = 0;
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->max_dt)
+      PetscCall(s->modules[m]->max_dt(s->modules[m], s, l));
+  PetscFunctionReturn(0);
+}
+
+static void timestep_note_binding(timestep *ts, const dt_limits *l) {
+  int which;
+  const double v = dt_limits_min(l, &which);
+  ts->binding_value = v;
+  if (which >= 0)
+    PetscStrncpy(ts->binding, l->item[which].name, sizeof(ts->binding));
+}
+
+PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
+  timestep *ts = &s->ts;
+  int which;
+  PetscFunctionBeginUser;
+  const PetscBool options_given = ts->adaptive;
+  ts->adaptive = s->dt <= 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(ts->adaptive || !options_given, s->comm, PETSC_ERR_ARG_INCOMP,
+             "-dt_safety, -dt_growth and -dt_min apply to the automatic time step only; with -dt "
+             "%g (fixed) "
+             "drop them or give -dt 0",
+             s->dt);
+  ts->t_anchor = 0;
+  ts->step_anchor = 0;
+  timestep_note_binding(ts, l);
+  if (!ts->adaptive)
+    PetscFunctionReturn(0);
+  const double limit = dt_limits_min(l, &which);
+  PetscCheck(which >= 0, s->comm, PETSC_ERR_ARG_WRONG,
+             "-dt 0 (automatic) needs at least one time-step limit, and no module gives one");
+  s->dt = ts->safety * limit;
+  if (ts->dt_min <= 0)
+    ts->dt_min = DT_MIN_FRACTION * s->dt;
+  PetscCheck(s->dt >= ts->dt_min, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the first automatic dt %g s (%g x the %s limit %g s) is below -dt_min %g s: the "
+             "state at t = 0 is "
+             "too stiff for the floor; lower -dt_min or soften the setup",
+             s->dt, ts->safety, l->item[which].name, limit, ts->dt_min);
+  PetscCall(PetscPrintf(
+      s->comm,
+      "dt = %g s chosen automatically (-dt 0): %g x the smallest limit, %s; re-evaluated every "
+      "step (floor -dt_min %g s)\n",
+      s->dt, ts->safety, l->item[which].name, ts->dt_min));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode timestep_csv_row(sim *s) {
+  timestep *ts = &s->ts;
+  PetscFunctionBeginUser;
+  if (!ts->csv)
+    PetscFunctionReturn(0);
+  PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t, s->dt,
+                    ts->binding));
+  PetscFunctionReturn(0);
+}
+
+/* dt.csv: the first evaluation of a run opens it; a fresh run records its
+ * first dt, a restarted one keeps the rows before its step (it writes the row
+ * of its own step again, if dt changes there). */
+static PetscErrorCode timestep_open_csv(sim *s) {
+  PetscFunctionBeginUser;
+  PetscCall(csv_open_keeping(s, "dt.csv", "step,t,dt,limit\n", (double)s->step - 0.5, &s->ts.csv));
+  if (!s->io.restarted)
+    PetscCall(timestep_csv_row(s));
+  PetscFunctionReturn(0);
+}
+
+/* Fixed dt: every limit the state now sets must still hold. */
+static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
+  timestep *ts = &s->ts;
+  PetscFunctionBeginUser;
+  for (int k = 0; k < l->n; k++) {
+    const dt_limit *it = &l->item[k];
+    if (s->dt <= it->value * (1.0 + 1e-12))
+      continue;
+    PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "step %" PetscInt_FMT
+               ", t = %g s: dt = %g s exceeds the %s limit %g s (%s) that the state now "
+               "sets; lower -dt, use -dt 0 (automatic), or -preflight warn to run on",
+               s->step, s->t, s->dt, it->name, it->value, it->formula);
+    if (!ts->warned)
+      PetscCall(PetscPrintf(s->comm,
+                            "WARNING: step %" PetscInt_FMT
+                            ", t = %g s: dt = %g s exceeds the %s limit %g s (%s); "
+                            "continuing (-preflight warn), printed once\n",
+                            s->step, s->t, s->dt, it->name, it->value, it->formula));
+    ts->warned = PETSC_TRUE;
+    break;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Automatic dt: the band, the growth bound and the floor. */
+static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
+  timestep *ts = &s->ts;
+  int which;
+  PetscFunctionBeginUser;
+  const double limit = dt_limits_min(l, &which);
+  PetscCheck(which >= 0, s->comm, PETSC_ERR_PLIB, "no time-step limit at step %" PetscInt_FMT,
+             s->step);
+  const double target = ts->safety * limit;
+  double dt = s->dt;
+  if (dt > target)
+    dt = DT_BAND_MID * target;
+  else if (dt < DT_BAND_LOW * target)
+    dt = PetscMin(ts->growth * dt, DT_BAND_MID * target);
+  PetscCheck(dt >= ts->dt_min, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "step %" PetscInt_FMT
+             ", t = %g s: the automatic dt would fall to %g s, below -dt_min %g s, driven by "
+             "the %s limit %g s (%s); the run is stopped here (its last checkpoint and outputs "
+             "stay valid)",
+             s->step, s->t, dt, ts->dt_min, l->item[which].name, limit, l->item[which].formula);
+  if (dt == s->dt)
+    PetscFunctionReturn(0);
+  s->dt = dt;
+  ts->t_anchor = s->t;
+  ts->step_anchor = s->step;
+  ts->n_changes++;
+  PetscCall(timestep_csv_row(s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode timestep_before_step(sim *s) {
+  dt_limits limits;
+  PetscFunctionBeginUser;
+  if (s->ts.adaptive && !s->ts.csv && !s->rank)
+    PetscCall(timestep_open_csv(s));
+  PetscCall(timestep_collect_limits(s, &limits));
+  timestep_note_binding(&s->ts, &limits);
+  if (s->ts.adaptive)
+    PetscCall(timestep_adapt(s, &limits));
+  else
+    PetscCall(timestep_check_fixed(s, &limits));
+  PetscFunctionReturn(0);
+}
+
+void timestep_advance(sim *s) {
+  s->step++;
+  /* from the anchor: no round-off accumulates over the steps of one dt */
+  s->t = s->ts.t_anchor + (double)(s->step - s->ts.step_anchor) * s->dt;
+}
+
+PetscErrorCode timestep_finish(sim *s) {
+  PetscFunctionBeginUser;
+  PetscCall(csv_close(&s->ts.csv, "dt.csv"));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,49 @@
+# Time-step control (src/core/timestep.c). The quick colon case with -dt 0 is
+# the stiff one that moves: its angle and then repulsion limits follow the
+# membrane and the liquid, so dt changes about 170 times in its 0.26 s.
+#  * the automatic dt is rank invariant (final states and dt.csv, 1-3 ranks)
+#    and restart-exact (io_restart_intestine_adaptive: every output file);
+#  * dt.csv is consistent (t from the last change, growth bound, both limits bind);
+#  * a floor above what the state needs stops the run naming the limit;
+#  * a fixed dt that the state outgrows stops the run naming the limit;
+#  * the automatic-dt options with a fixed dt are refused.
+set(DMHS_TS_OUT ${CMAKE_BINARY_DIR}/test-output/timestep)
+set(TS_COLON -options_file ${PROJECT_SOURCE_DIR}/input/intestine-quick.opts -quiet -checkpoint_at_end false)
+set(DMHS_DT_CSV ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/dt_csv.py)
+
+foreach(n 1 2 3)
+  add_test(NAME timestep_adaptive_np${n}
+    COMMAND ${DMHS_MPIRUN} -n ${n} ${DMHS_EXE} ${TS_COLON} -dt 0
+            -output_dir ${DMHS_TS_OUT}/adaptive_np${n} -dump_final ${DMHS_TS_OUT}/adaptive_np${n}.csv)
+  set_tests_properties(timestep_adaptive_np${n} PROPERTIES LABELS "validation;mpi" PROCESSORS ${n} TIMEOUT 300
+    FIXTURES_SETUP timestep_adaptive)
+endforeach()
+add_test(NAME timestep_adaptive_dt_csv
+  COMMAND ${DMHS_DT_CSV} ${DMHS_TS_OUT}/adaptive_np1 --min-changes 100 --limit "angle harmonic" --limit repulsion
+          --same ${DMHS_TS_OUT}/adaptive_np2 --same ${DMHS_TS_OUT}/adaptive_np3)
+add_test(NAME timestep_adaptive_rank_invariance
+  COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/test/mpi/compare_dumps.py --tol 0 ${DMHS_TS_OUT}/adaptive_np1.csv
+          ${DMHS_TS_OUT}/adaptive_np2.csv ${DMHS_TS_OUT}/adaptive_np3.csv)
+set_tests_properties(timestep_adaptive_dt_csv timestep_adaptive_rank_invariance PROPERTIES LABELS validation
+  TIMEOUT 60 FIXTURES_REQUIRED timestep_adaptive)
+
+# 2 ranks to 0.1 s against 2 ranks to 0.05 s + restart on 1 (dt.csv compared too)
+dmhs_restart_test(io_restart_intestine_adaptive 2 2 1 0.1 -options_file
+                  ${PROJECT_SOURCE_DIR}/input/intestine-quick.opts -dt 0)
+
+add_test(NAME timestep_floor_stops COMMAND ${DMHS_EXPECT_FAIL}
+  "the automatic dt would fall to .* below -dt_min 8e-05 s, driven by the (angle harmonic|repulsion) limit"
+  --no-nan ${DMHS_TS_OUT}/floor --lines 60 --
+  ${DMHS_EXE} ${TS_COLON} -dt 0 -dt_min 8e-5 -t_end 0.1 -output_dir ${DMHS_TS_OUT}/floor)
+# the angle limit is 1.147e-4 s at t = 0 and falls as the membrane bends
+add_test(NAME timestep_fixed_outgrown_stops COMMAND ${DMHS_EXPECT_FAIL}
+  "step [1-9][0-9]*, t = .* dt = 0.00011 s exceeds the (angle harmonic|repulsion) limit .* that the state now sets"
+  --no-nan ${DMHS_TS_OUT}/outgrown --lines 60 --
+  ${DMHS_EXE} ${TS_COLON} -dt 1.1e-4 -t_end 0.1 -output_dir ${DMHS_TS_OUT}/outgrown)
+add_test(NAME timestep_options_need_automatic COMMAND ${DMHS_EXPECT_FAIL}
+  "-dt_safety, -dt_growth and -dt_min apply to the automatic time step only" --
+  ${DMHS_EXE} ${TS_COLON} -dt 3e-5 -dt_safety 0.5 -output_dir ${DMHS_TS_OUT}/options)
+add_test(NAME timestep_bad_safety COMMAND ${DMHS_EXPECT_FAIL} "-dt_safety must be in \\(0, 1\\] \\(got 1.5\\)" --
+  ${DMHS_EXE} ${TS_COLON} -dt 0 -dt_safety 1.5 -output_dir ${DMHS_TS_OUT}/safety)
+set_tests_properties(timestep_floor_stops timestep_fixed_outgrown_stops timestep_options_need_automatic
+  timestep_bad_safety PROPERTIES LABELS validation TIMEOUT 120)
