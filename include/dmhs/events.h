@@ -12,6 +12,7 @@ typedef struct dmhs_events {
   PetscLogEvent checkpoint;
   PetscLogEvent topology, bond, angle, repulsion, solid_load; /* solids (issue 3) */
   PetscLogEvent peristalsis; /* intestine */
+  PetscLogEvent substeps, timestep; /* solid sub-steps; the limits before every step */
 } dmhs_events;
 
 extern dmhs_events events;

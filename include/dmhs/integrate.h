@@ -11,6 +11,7 @@ typedef struct dt_limit {
   char name[32];    /* e.g. "sph sound speed" */
   char formula[96]; /* what was evaluated, naming the length it uses */
   double value;     /* [s] */
+  PetscBool inner;  /* from a solid_internal module: bounds the solid sub-step */
 } dt_limit;
 
 typedef struct dt_limits {

@@ -15,6 +15,10 @@ typedef struct module module;
 struct module {
   const char *name;
   unsigned needs;
+  /* Its forces act between solid particles and depend on their positions
+   * only (bonds, angles): with -solid_substeps they are evaluated on every
+   * solid sub-step, and its time-step limits bound the sub-step. */
+  PetscBool solid_internal;
   double reach; /* longest interaction distance [m]; sets the ghost width */
   PetscErrorCode (*set_from_options)(module *self, struct sim *s);
   PetscErrorCode (*setup)(module *self, struct sim *s);

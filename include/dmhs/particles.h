@@ -44,6 +44,8 @@ typedef struct particles {
   double *speed;              /* |v| [m/s] */
   double *displacement;       /* |x - x0| (minimum image) [m] */
   PetscInt *side;             /* vein: side of the nearest leaflet, -1/0/+1 */
+  double (*a_hold)[DMHS_DIM]; /* -solid_substeps: the solid's acceleration from everything but its
+                                 own bonds and angles, held over the sub-steps [m/s^2] */
 } particles;
 
 PetscErrorCode particles_create(particles *ps);

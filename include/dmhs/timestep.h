@@ -12,6 +12,10 @@
  *     falls below the band. A target under -dt_min stops the run, naming the
  *     limit that drove it there. Every change is a row of
  *     <output_dir>/dt.csv (step,t,dt,limit).
+ * Solid sub-cycling (-solid_substeps N, src/core/substep.c): the limits of
+ * the solid_internal modules (bonds, angles) bound dt/N, the others dt; N = 0
+ * picks N every step as the smallest that keeps dt/N within -dt_safety (0.8
+ * by default) x the solids' limit. dt.csv gains a column substeps.
  * t advances as t_anchor + (step - step_anchor) dt with the anchor moved at
  * each change: a fixed-dt run keeps t = step dt exactly, and the anchor is
  * checkpointed, so a restart continues the same t bit for bit. */
@@ -29,6 +33,8 @@ struct dt_limits;
 #define DT_BAND_MID       0.95
 /* -dt_min 0: this fraction of the first automatic dt */
 #define DT_MIN_FRACTION 1e-3
+/* -solid_substeps 0 picks at most this many */
+#define SUBSTEPS_MAX 1000
 
 typedef struct timestep {
   PetscBool adaptive; /* -dt 0 */
@@ -42,9 +48,12 @@ typedef struct timestep {
   PetscInt n_changes; /* dt changes during this run (restart: since it) */
   PetscBool warned;   /* fixed dt over a limit with -preflight warn: said once */
   FILE *csv;          /* rank 0: dt.csv */
+  PetscInt substeps_option; /* -solid_substeps: 1 = off, 0 = automatic */
+  PetscBool subcycling;     /* substeps_option != 1 */
+  PetscInt n_sub;           /* sub-steps of the current step */
 } timestep;
 
-/* -dt, -dt_safety, -dt_growth, -dt_min. */
+/* -dt, -dt_safety, -dt_growth, -dt_min, -solid_substeps. */
 PetscErrorCode timestep_set_from_options(struct sim *s);
 /* Every enabled module's limits for the current state. */
 PetscErrorCode timestep_collect_limits(struct sim *s, struct dt_limits *l);
@@ -56,6 +65,9 @@ PetscErrorCode timestep_choose_first(struct sim *s, const struct dt_limits *l);
 PetscErrorCode timestep_before_step(struct sim *s);
 /* After the drift: step + 1 and its time. */
 void timestep_advance(struct sim *s);
+/* The dt a limit is compared with: dt/N for the solids' own limits when
+ * sub-cycling, dt otherwise. */
+double timestep_dt_for(const struct sim *s, PetscBool inner);
 /* Closes dt.csv. */
 PetscErrorCode timestep_finish(struct sim *s);
 

@@ -11,6 +11,8 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogStageRegister("dmhs setup", &events.stage_setup));
   PetscCall(PetscLogStageRegister("dmhs steps", &events.stage_steps));
   PetscCall(PetscLogEventRegister("Integrate", id, &events.integrate));
+  PetscCall(PetscLogEventRegister("SolidSubsteps", id, &events.substeps));
+  PetscCall(PetscLogEventRegister("TimeStep", id, &events.timestep));
   PetscCall(PetscLogEventRegister("Migrate", id, &events.migrate));
   PetscCall(PetscLogEventRegister("HaloBuild", id, &events.halo_build));
   PetscCall(PetscLogEventRegister("HaloForward", id, &events.halo_forward));

@@ -52,6 +52,9 @@ static const field_desc table[] = {
     /* optional: side of the nearest leaflet a fluid particle was last seen on
      * (-1, +1; 0 = not beside one), for the vein's crossing count */
     ROW(side, 1, FIELD_INT, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "1"),
+    /* optional (-solid_substeps): set by the force evaluation, used by the
+     * next step's sub-steps; checkpointed so a restart continues them */
+    ROW(a_hold, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "m/s^2"),
 };
 
 #define N_ROWS (sizeof(table) / sizeof(table[0]))

@@ -53,9 +53,15 @@ PetscErrorCode integrate_first_half(sim *s) {
   particles *ps = &s->ps;
   const double dt = s->dt, half = 0.5 * s->dt;
   const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
+    if (subcycled && ps->type[i] == PTYPE_SOLID) {
+      /* its density belongs to the liquid's step; its motion to the sub-steps */
+      if (continuity) ps->rho[i] += half * ps->drho[i];
+      continue;
+    }
     if (ps->type[i] == PTYPE_WALL) {
       for (int k = 0; k < DMHS_DIM; k++) {
         ps->v_est[i][k] = ps->v[i][k];
@@ -78,10 +84,17 @@ PetscErrorCode integrate_second_half(sim *s) {
   particles *ps = &s->ps;
   const double half = 0.5 * s->dt;
   const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  /* sub-cycled solids: the second half kick of their last sub-step */
+  const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] == PTYPE_WALL) continue;
+    if (ps->type[i] == PTYPE_SOLID && half_solid != half) {
+      for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half_solid * ps->a[i][k];
+      if (continuity) ps->rho[i] += half * ps->drho[i];
+      continue;
+    }
     for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half * ps->a[i][k];
     if (continuity) ps->rho[i] += half * ps->drho[i];
   }
@@ -105,12 +118,18 @@ PetscErrorCode integrate_stability_report(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(timestep_collect_limits(s, &limits));
   PetscCall(timestep_choose_first(s, &limits)); /* -dt 0: the first dt */
-  PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
+  if (s->ts.subcycling)
+    PetscCall(PetscPrintf(s->comm,
+                          "Stability report (pre-flight), dt = %g s, %" PetscInt_FMT
+                          " solid sub-steps (the solids' own limits, marked *, against dt/%" PetscInt_FMT "):\n",
+                          s->dt, s->ts.n_sub, s->ts.n_sub));
+  else PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
   for (int k = 0; k < limits.n; k++) {
     const dt_limit *l = &limits.item[k];
-    const PetscBool over = s->dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s\n", l->name, l->formula, l->value,
-                          s->dt / l->value, over ? "  EXCEEDED" : ""));
+    const double dt = timestep_dt_for(s, l->inner);
+    const PetscBool over = dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s%s\n", l->name, l->formula, l->value,
+                          dt / l->value, s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
     problems += over;
   }
   if (s->sph_enabled && s->dx > 0) {

@@ -17,6 +17,7 @@
 #include "dmhs/migrate.h"
 #include "dmhs/progress.h"
 #include "dmhs/dump.h" /* mpi */
+#include "dmhs/substep.h"
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_", NULL};
 
@@ -228,6 +229,10 @@ PetscErrorCode sim_compute_forces(sim *s) {
   particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
+  if (s->ts.subcycling) {
+    PetscCall(substep_compute_forces(s)); /* the solids' own share kept apart */
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscArrayzero(ps->a, n));
   PetscCall(PetscArrayzero(ps->drho, n));
   for (int m = 0; m < s->n_modules; m++) PetscCall(s->modules[m]->compute(s->modules[m], s));
@@ -345,6 +350,7 @@ PetscErrorCode sim_run(sim *s) {
   while (s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
     PetscCall(integrate_first_half(s));
+    if (s->ts.subcycling) PetscCall(substep_solids(s)); /* the solids' sub-steps */
     timestep_advance(s);
     PetscCall(sim_update_neighbours(s, s->force_rebuild));
     s->force_rebuild = PETSC_FALSE;

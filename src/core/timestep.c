@@ -6,11 +6,15 @@
 #include "dmhs/integrate.h"
 #include "dmhs/timestep.h"
 #include "dmhs/csv.h"
+#include "dmhs/events.h"
+#include "dmhs/fields.h"
 
 PetscErrorCode timestep_set_from_options(sim *s) {
   timestep *ts = &s->ts;
   PetscBool safety_set, growth_set, min_set;
   PetscFunctionBeginUser;
+  ts->substeps_option = 1;
+  ts->n_sub = 1;
   ts->safety = DT_SAFETY_DEFAULT;
   ts->growth = DT_GROWTH_DEFAULT;
   ts->dt_min = 0;
@@ -30,7 +34,19 @@ PetscErrorCode timestep_set_from_options(sim *s) {
       "With -dt 0: the run stops when dt would fall below this [s] (0 = 1e-3 x the first "
       "automatic dt)",
       NULL, ts->dt_min, &ts->dt_min, &min_set));
+  PetscCall(PetscOptionsInt("-solid_substeps",
+                            "Sub-steps of the solids' bonds and angles per step [1] (1 = off, 0 = "
+                            "automatic from the ratio of the liquid's to the solids' limits)",
+                            NULL, ts->substeps_option, &ts->substeps_option, NULL));
   PetscOptionsEnd();
+  PetscCheck(ts->substeps_option >= 0 && ts->substeps_option <= SUBSTEPS_MAX, s->comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
+             "-solid_substeps must be in [0, %d] (got %" PetscInt_FMT "; 1 = off, 0 = automatic)",
+             SUBSTEPS_MAX, ts->substeps_option);
+  ts->subcycling = ts->substeps_option != 1 ? PETSC_TRUE : PETSC_FALSE;
+  /* the held acceleration is a particle field: it must exist before the scene builds */
+  if (ts->subcycling)
+    PetscCall(fields_enable("a_hold"));
   PetscCheck(s->dt >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-dt must be >= 0 (got %g; 0 = automatic)", s->dt);
   PetscCheck(ts->safety > 0 && ts->safety <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -49,16 +65,84 @@ PetscErrorCode timestep_set_from_options(sim *s) {
 PetscErrorCode timestep_collect_limits(sim *s, dt_limits *l) {
   PetscFunctionBeginUser;
   l->n = 0;
-  for (int m = 0; m < s->n_modules; m++)
+  for (int m = 0; m < s->n_modules; m++) {
+    const int first = l->n;
     if (s->modules[m]->max_dt)
       PetscCall(s->modules[m]->max_dt(s->modules[m], s, l));
+    for (int k = first; k < l->n; k++)
+      l->item[k].inner = s->modules[m]->solid_internal;
+  }
+  PetscFunctionReturn(0);
+}
+
+double timestep_dt_for(const sim *s, PetscBool inner) {
+  return inner && s->ts.subcycling ? s->dt / (double)s->ts.n_sub : s->dt;
+}
+
+/* The smallest limit on dt itself: the others', and (sub-cycling with a fixed
+ * N) N x the solids'. With -solid_substeps 0 the solids' limits do not bound
+ * dt (N follows them) unless nothing else does. */
+static double timestep_effective_limit(const timestep *ts, const dt_limits *l, int *which) {
+  double best = INFINITY, inner_best = INFINITY;
+  int inner_which = -1;
+  *which = -1;
+  for (int k = 0; k < l->n; k++) {
+    const double v = l->item[k].value;
+    if (ts->subcycling && l->item[k].inner) {
+      if (v < inner_best) {
+        inner_best = v;
+        inner_which = k;
+      }
+      if (ts->substeps_option > 0 && v * (double)ts->substeps_option < best) {
+        best = v * (double)ts->substeps_option;
+        *which = k;
+      }
+    } else if (v < best) {
+      best = v;
+      *which = k;
+    }
+  }
+  if (*which < 0 && inner_which >= 0) { /* only the solids' limits: nothing to gain */
+    *which = inner_which;
+    best = inner_best;
+  }
+  return best;
+}
+
+/* Sub-steps for the current dt: fixed, or the fewest that keep dt/N within
+ * the safety fraction of the solids' smallest limit. */
+static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
+  timestep *ts = &s->ts;
+  double inner = INFINITY;
+  int which = -1;
+  PetscFunctionBeginUser;
+  if (!ts->subcycling)
+    PetscFunctionReturn(0);
+  if (ts->substeps_option > 0) {
+    ts->n_sub = ts->substeps_option;
+    PetscFunctionReturn(0);
+  }
+  for (int k = 0; k < l->n; k++)
+    if (l->item[k].inner && l->item[k].value < inner) {
+      inner = l->item[k].value;
+      which = k;
+    }
+  if (which < 0) {
+    ts->n_sub = 1;
+    PetscFunctionReturn(0);
+  }
+  const double n = ceil(s->dt / (ts->safety * inner) * (1.0 - 1e-12));
+  PetscCheck(n <= SUBSTEPS_MAX, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "step %" PetscInt_FMT ": -solid_substeps 0 would need %g sub-steps of dt = %g s for the "
+             "%s limit %g s (at most %d): lower -dt",
+             s->step, n, s->dt, l->item[which].name, inner, SUBSTEPS_MAX);
+  ts->n_sub = n < 1 ? 1 : (PetscInt)n;
   PetscFunctionReturn(0);
 }
 
 static void timestep_note_binding(timestep *ts, const dt_limits *l) {
   int which;
-  const double v = dt_limits_min(l, &which);
-  ts->binding_value = v;
+  ts->binding_value = timestep_effective_limit(ts, l, &which);
   if (which >= 0)
     PetscStrncpy(ts->binding, l->item[which].name, sizeof(ts->binding));
 }
@@ -71,30 +155,30 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
   ts->adaptive = s->dt <= 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(ts->adaptive || !options_given, s->comm, PETSC_ERR_ARG_INCOMP,
              "-dt_safety, -dt_growth and -dt_min apply to the automatic time step only; with -dt "
-             "%g (fixed) "
-             "drop them or give -dt 0",
+             "%g (fixed) drop them or give -dt 0",
              s->dt);
   ts->t_anchor = 0;
   ts->step_anchor = 0;
   timestep_note_binding(ts, l);
-  if (!ts->adaptive)
+  if (!ts->adaptive) {
+    PetscCall(timestep_choose_substeps(s, l));
     PetscFunctionReturn(0);
-  const double limit = dt_limits_min(l, &which);
+  }
+  const double limit = timestep_effective_limit(ts, l, &which);
   PetscCheck(which >= 0, s->comm, PETSC_ERR_ARG_WRONG,
              "-dt 0 (automatic) needs at least one time-step limit, and no module gives one");
   s->dt = ts->safety * limit;
+  PetscCall(timestep_choose_substeps(s, l));
   if (ts->dt_min <= 0)
     ts->dt_min = DT_MIN_FRACTION * s->dt;
   PetscCheck(s->dt >= ts->dt_min, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "the first automatic dt %g s (%g x the %s limit %g s) is below -dt_min %g s: the "
-             "state at t = 0 is "
-             "too stiff for the floor; lower -dt_min or soften the setup",
+             "state at t = 0 is too stiff for the floor; lower -dt_min or soften the setup",
              s->dt, ts->safety, l->item[which].name, limit, ts->dt_min);
-  PetscCall(PetscPrintf(
-      s->comm,
-      "dt = %g s chosen automatically (-dt 0): %g x the smallest limit, %s; re-evaluated every "
-      "step (floor -dt_min %g s)\n",
-      s->dt, ts->safety, l->item[which].name, ts->dt_min));
+  PetscCall(PetscPrintf(s->comm,
+                        "dt = %g s chosen automatically (-dt 0): %g x the smallest limit, %s; "
+                        "re-evaluated every step (floor -dt_min %g s)\n",
+                        s->dt, ts->safety, l->item[which].name, ts->dt_min));
   PetscFunctionReturn(0);
 }
 
@@ -103,8 +187,12 @@ static PetscErrorCode timestep_csv_row(sim *s) {
   PetscFunctionBeginUser;
   if (!ts->csv)
     PetscFunctionReturn(0);
-  PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t, s->dt,
-                    ts->binding));
+  if (ts->subcycling)
+    PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s,%" PetscInt_FMT "\n",
+                      s->step, s->t, s->dt, ts->binding, ts->n_sub));
+  else
+    PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t,
+                      s->dt, ts->binding));
   PetscFunctionReturn(0);
 }
 
@@ -113,43 +201,45 @@ static PetscErrorCode timestep_csv_row(sim *s) {
  * of its own step again, if dt changes there). */
 static PetscErrorCode timestep_open_csv(sim *s) {
   PetscFunctionBeginUser;
-  PetscCall(csv_open_keeping(s, "dt.csv", "step,t,dt,limit\n", (double)s->step - 0.5, &s->ts.csv));
+  const char *header = s->ts.subcycling ? "step,t,dt,limit,substeps\n" : "step,t,dt,limit\n";
+  PetscCall(csv_open_keeping(s, "dt.csv", header, (double)s->step - 0.5, &s->ts.csv));
   if (!s->io.restarted)
     PetscCall(timestep_csv_row(s));
   PetscFunctionReturn(0);
 }
 
-/* Fixed dt: every limit the state now sets must still hold. */
+/* Fixed dt: every limit the state now sets must still hold (the solids' own
+ * against dt/N when sub-cycling). */
 static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
   timestep *ts = &s->ts;
   PetscFunctionBeginUser;
   for (int k = 0; k < l->n; k++) {
     const dt_limit *it = &l->item[k];
-    if (s->dt <= it->value * (1.0 + 1e-12))
+    const double dt = timestep_dt_for(s, it->inner);
+    if (dt <= it->value * (1.0 + 1e-12))
       continue;
+    const char *what = dt < s->dt ? "dt/substeps" : "dt";
     PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "step %" PetscInt_FMT
-               ", t = %g s: dt = %g s exceeds the %s limit %g s (%s) that the state now "
-               "sets; lower -dt, use -dt 0 (automatic), or -preflight warn to run on",
-               s->step, s->t, s->dt, it->name, it->value, it->formula);
+               "step %" PetscInt_FMT ", t = %g s: %s = %g s exceeds the %s limit %g s (%s) that the "
+               "state now sets; lower -dt, use -dt 0 (automatic), or -preflight warn to run on",
+               s->step, s->t, what, dt, it->name, it->value, it->formula);
     if (!ts->warned)
       PetscCall(PetscPrintf(s->comm,
-                            "WARNING: step %" PetscInt_FMT
-                            ", t = %g s: dt = %g s exceeds the %s limit %g s (%s); "
-                            "continuing (-preflight warn), printed once\n",
-                            s->step, s->t, s->dt, it->name, it->value, it->formula));
+                            "WARNING: step %" PetscInt_FMT ", t = %g s: %s = %g s exceeds the %s "
+                            "limit %g s (%s); continuing (-preflight warn), printed once\n",
+                            s->step, s->t, what, dt, it->name, it->value, it->formula));
     ts->warned = PETSC_TRUE;
     break;
   }
   PetscFunctionReturn(0);
 }
 
-/* Automatic dt: the band, the growth bound and the floor. */
+/* Automatic dt: the band, the growth bound and the floor; then the sub-steps. */
 static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
   timestep *ts = &s->ts;
   int which;
   PetscFunctionBeginUser;
-  const double limit = dt_limits_min(l, &which);
+  const double limit = timestep_effective_limit(ts, l, &which);
   PetscCheck(which >= 0, s->comm, PETSC_ERR_PLIB, "no time-step limit at step %" PetscInt_FMT,
              s->step);
   const double target = ts->safety * limit;
@@ -159,32 +249,44 @@ static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
   else if (dt < DT_BAND_LOW * target)
     dt = PetscMin(ts->growth * dt, DT_BAND_MID * target);
   PetscCheck(dt >= ts->dt_min, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "step %" PetscInt_FMT
-             ", t = %g s: the automatic dt would fall to %g s, below -dt_min %g s, driven by "
-             "the %s limit %g s (%s); the run is stopped here (its last checkpoint and outputs "
-             "stay valid)",
+             "step %" PetscInt_FMT ", t = %g s: the automatic dt would fall to %g s, below -dt_min "
+             "%g s, driven by the %s limit %g s (%s); the run is stopped here (its last checkpoint "
+             "and outputs stay valid)",
              s->step, s->t, dt, ts->dt_min, l->item[which].name, limit, l->item[which].formula);
-  if (dt == s->dt)
-    PetscFunctionReturn(0);
+  const PetscInt n_sub_before = ts->n_sub;
+  const PetscBool dt_changed = dt != s->dt ? PETSC_TRUE : PETSC_FALSE;
   s->dt = dt;
-  ts->t_anchor = s->t;
-  ts->step_anchor = s->step;
+  PetscCall(timestep_choose_substeps(s, l));
+  if (!dt_changed && ts->n_sub == n_sub_before)
+    PetscFunctionReturn(0);
+  if (dt_changed) {
+    ts->t_anchor = s->t;
+    ts->step_anchor = s->step;
+  }
   ts->n_changes++;
   PetscCall(timestep_csv_row(s));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode timestep_before_step(sim *s) {
+  timestep *ts = &s->ts;
   dt_limits limits;
   PetscFunctionBeginUser;
-  if (s->ts.adaptive && !s->ts.csv && !s->rank)
+  PetscCall(PetscLogEventBegin(events.timestep, 0, 0, 0, 0));
+  if ((ts->adaptive || ts->substeps_option == 0) && !ts->csv && !s->rank)
     PetscCall(timestep_open_csv(s));
   PetscCall(timestep_collect_limits(s, &limits));
-  timestep_note_binding(&s->ts, &limits);
-  if (s->ts.adaptive)
+  timestep_note_binding(ts, &limits);
+  if (ts->adaptive)
     PetscCall(timestep_adapt(s, &limits));
-  else
+  else {
+    const PetscInt n_sub_before = ts->n_sub;
+    PetscCall(timestep_choose_substeps(s, &limits));
+    if (ts->n_sub != n_sub_before)
+      PetscCall(timestep_csv_row(s));
     PetscCall(timestep_check_fixed(s, &limits));
+  }
+  PetscCall(PetscLogEventEnd(events.timestep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

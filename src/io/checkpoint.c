@@ -265,6 +265,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     const PetscInt64 step_anchor = s->ts.step_anchor;
     PetscCall(h5io_put_reals(tmp, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "dt_anchor_step", &step_anchor, 1));
+    const PetscInt64 n_sub = s->ts.n_sub;
+    PetscCall(h5io_put_int64s(tmp, fid, "solid_substeps", &n_sub, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "body_accel", s->body_accel, DMHS_DIM));
@@ -431,6 +433,12 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_reals(path, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
   PetscCall(h5io_get_int64s(path, fid, "dt_anchor_step", &step_anchor, 1));
   s->ts.step_anchor = (PetscInt)step_anchor;
+  PetscInt64 n_sub;
+  PetscCall(h5io_get_int64s(path, fid, "solid_substeps", &n_sub, 1));
+  PetscCheck(n_sub >= 1 && n_sub <= SUBSTEPS_MAX, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: invalid solid_substeps %" PetscInt64_FMT, path, n_sub);
+  /* the sub-steps of the step that wrote it, for the record of changes (dt.csv) */
+  s->ts.n_sub = (PetscInt)n_sub;
   PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
   PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
   PetscCall(h5io_get_reals(path, fid, "body_accel", s->body_accel, DMHS_DIM));

@@ -204,6 +204,7 @@ PetscErrorCode angle_harmonic_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "angle_harmonic";
+  (*m)->solid_internal = PETSC_TRUE;
   (*m)->needs = MODULE_NEEDS_ANGLES;
   (*m)->set_from_options = angle_set_from_options;
   (*m)->setup = angle_setup;

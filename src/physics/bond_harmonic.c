@@ -117,6 +117,7 @@ PetscErrorCode bond_harmonic_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "bond_harmonic";
+  (*m)->solid_internal = PETSC_TRUE;
   (*m)->needs = MODULE_NEEDS_BONDS;
   (*m)->set_from_options = bond_harmonic_set_from_options;
   (*m)->setup = bond_harmonic_setup;

@@ -195,6 +195,7 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "bond_nonlinear";
+  (*m)->solid_internal = PETSC_TRUE;
   (*m)->needs = MODULE_NEEDS_BONDS;
   (*m)->set_from_options = bond_nonlinear_set_from_options;
   (*m)->setup = bond_nonlinear_setup;

@@ -15,6 +15,8 @@
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/repulsion.h"
+#include "dmhs/substep.h"
+#include "dmhs/fields.h"
 
 #define OK(call) assert_int_equal((call), 0)
 
@@ -68,8 +70,18 @@ static inline double fixture_energy(sim *s, double P[2]) {
   return e;
 }
 
+/* -solid_substeps n (before any particle is added): the held acceleration's field */
+static inline void fixture_substeps(sim *s, PetscInt n) {
+  s->ts.substeps_option = s->ts.n_sub = n;
+  s->ts.subcycling = n != 1 ? PETSC_TRUE : PETSC_FALSE;
+  fields_reset();
+  if (s->ts.subcycling) OK(fields_enable("a_hold"));
+}
+
+/* One step as sim_run takes it (fixed dt, no migration). */
 static inline void fixture_step(sim *s) {
   OK(integrate_first_half(s));
+  if (s->ts.subcycling) OK(substep_solids(s));
   s->step++;
   s->t = s->step * s->dt;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) domain_wrap(&s->dom, s->ps.x[i]);

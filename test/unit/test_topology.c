@@ -76,10 +76,13 @@ static void test_exclusions(void **state) {
   }
 }
 
-static void conservation(const char *bond_module, double k, double rmax, double ka) {
+/* substeps > 1: the same structure on substeps sub-steps of dt/substeps
+ * (src/core/substep.c), with the same sub-step as the plain run's step */
+static void conservation(const char *bond_module, double k, double rmax, double ka, PetscInt substeps) {
   const PetscInt n = 4;
   const double r0 = 1e-4, m = 2e-5;
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
+  fixture_substeps(s, substeps);
   OK(sim_enable_module(s, bond_module, NULL));
   OK(sim_enable_module(s, "angle_harmonic", NULL));
   OK(bond_set_default(s, k, r0, rmax));
@@ -98,15 +101,16 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   /* the fastest mode: a particle on 3 bonds and 4 angles; dt well inside the limit */
   const double kbond = strcmp(bond_module, "bond_harmonic") ? 2 * k / (rmax * rmax) : 2 * k;
   const double kmax = PetscMax(kbond, 2 * ka / (r0 * r0));
-  s->dt = 0.02 * sqrt(m / kmax);
+  s->dt = 0.02 * sqrt(m / kmax) * (double)substeps;
   double drift = 0, pscale = 0, t[100], e[100];
   int n_samples = 0;
   double dP = 0, impulse = 0; /* round-off scale: eps x the impulses summed over the run */
   for (PetscInt i = 0; i < s->ps.n_owned; i++) pscale += m * hypot(s->ps.v[i][0], s->ps.v[i][1]);
-  for (int step = 1; step <= 100000; step++) {
+  const int n_steps = 100000 / (int)substeps;
+  for (int step = 1; step <= n_steps; step++) {
     fixture_step(s);
     for (PetscInt i = 0; i < s->ps.n_owned; i++) impulse += m * s->dt * hypot(s->ps.a[i][0], s->ps.a[i][1]);
-    if (step % 1000 == 0) {
+    if (step % (1000 / (int)substeps) == 0) {
       const double E = fixture_energy(s, P);
       drift = PetscMax(drift, fabs(E - E0) / E0);
       t[n_samples] = s->t;
@@ -119,8 +123,9 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   gsl_set_error_handler_off();
   assert_int_equal(gsl_fit_linear(t, 1, e, 1, (size_t)n_samples, &c0, &c1, &cov00, &cov01, &cov11, &sumsq), 0);
   const double secular = fabs(c1 * s->t);
-  print_message("%s: over 1e5 steps (dt = %.3g s = 0.02 sqrt(m/k_max)): max |E - E0|/E0 = %.3e, fitted drift %.3e\n",
-                bond_module, s->dt, drift, secular);
+  print_message("%s, %d sub-steps: over 1e5 sub-steps (dt/substeps = %.3g s = 0.02 sqrt(m/k_max)): max |E - "
+                "E0|/E0 = %.3e, fitted drift %.3e\n",
+                bond_module, (int)substeps, s->dt / (double)substeps, drift, secular);
   print_message("  momentum change %.3e kg m/s; eps x summed impulses %.3e; sum m|v0| %.3e\n", dP,
                 DBL_EPSILON * impulse, pscale);
   assert_true(dP < DBL_EPSILON * impulse);
@@ -131,12 +136,21 @@ static void conservation(const char *bond_module, double k, double rmax, double 
 
 static void test_conservation_harmonic(void **state) {
   (void)state;
-  conservation("bond_harmonic", 1e6, 0, 0.01);
+  conservation("bond_harmonic", 1e6, 0, 0.01, 1);
 }
 
 static void test_conservation_nonlinear(void **state) {
   (void)state;
-  conservation("bond_nonlinear", 1e-4, 0.5e-4, 1e-4);
+  conservation("bond_nonlinear", 1e-4, 0.5e-4, 1e-4, 1);
+}
+
+/* an isolated structure on 4 sub-steps per step conserves energy and
+ * momentum as well as on one (it sees no other force: a_hold = 0) */
+static void test_conservation_substeps(void **state) {
+  (void)state;
+  conservation("bond_harmonic", 1e6, 0, 0.01, 4);
+  conservation("bond_nonlinear", 1e-4, 0.5e-4, 1e-4, 4);
+  fields_reset();
 }
 
 int main(int argc, char **argv) {
@@ -145,6 +159,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_exclusions),
       cmocka_unit_test(test_conservation_harmonic),
       cmocka_unit_test(test_conservation_nonlinear),
+      cmocka_unit_test(test_conservation_substeps),
   };
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(events_register());

@@ -22,6 +22,10 @@ p.add_argument("--ka", type=float, default=0.01, help="angle stiffness k_a [J]")
 p.add_argument("--K", type=float, default=1e6, help="harmonic bond K [J/m^2]")
 p.add_argument("--tol", type=float, required=True, help="relative tolerance")
 p.add_argument("--deflection", type=float, default=0.01, help="target tip deflection / L")
+p.add_argument("--extra", default="", help="more dmhs options (one string), e.g. the sub-steps")
+p.add_argument("--energy-tol", type=float, default=0.0,
+               help="frequency mode: also require |E(t) - E(0)| <= this x max potential energy, with "
+                    "E = kinetic + potential - work of the tip load")
 a = p.parse_args()
 
 r0, m, n_clamp = 1e-4, 2e-5, 1
@@ -51,7 +55,7 @@ else:
 cmd = [a.exe, "-scene", "cantilever", "-cantilever_n", str(a.n), "-bond_k", repr(a.K), "-bond_r0", repr(r0),
        "-angle_k", repr(a.ka), "-cantilever_mass", repr(m), "-solid_load_force", f"0,{-F!r}",
        "-solid_damping", repr(gamma), "-t_end", repr(t_end), "-output_interval", repr(out_dt),
-       "-output_dir", a.outdir, "-quiet"]
+       "-output_dir", a.outdir, "-quiet"] + a.extra.split()
 print(" ".join(cmd))
 subprocess.run(cmd, check=True)
 
@@ -79,5 +83,13 @@ else:
           f"({len(periods)} periods), beam theory {w1:.6g} rad/s (Dunkerley {w1_beam:.6g} of Euler-Bernoulli {wb:.6g} and shear beam {ws:.6g}, with the lumped tip mass); "
           f"relative error {(got-w1)/w1:+.3%}; tolerance {a.tol:.1%}")
     ok = abs(got - w1) <= a.tol * w1 and len(periods) >= 3
+    if a.energy_tol > 0:
+        # the load's work is in the potential (solid_load): E = kinetic + potential is conserved
+        E = data["kinetic"] + data["potential"]
+        scale = np.max(np.abs(data["kinetic"]))
+        drift = np.max(np.abs(E - E[0])) / scale
+        print(f"energy: max|E(t) - E(0)| = {drift:.3e} of the largest kinetic energy {scale:.4g} J over "
+              f"{t[-1]:.4g} s; tolerance {a.energy_tol:.1e}")
+        ok = ok and np.all(np.isfinite(E)) and scale > 0 and drift <= a.energy_tol
 print("PASS" if ok else "FAIL")
 sys.exit(0 if ok else 1)

@@ -15,11 +15,32 @@ function(dmhs_extreme_ok name)
   set_tests_properties(extreme_${name} PROPERTIES LABELS validation TIMEOUT 120)
 endfunction()
 
-dmhs_extreme_ok(soft_angles -angle_k 1e-4 -t_end 0.02)          # SPEC soft leaflets
-dmhs_extreme_ok(rigid_angles -angle_k 0.05 -t_end 0.002)        # SPEC most rigid
-dmhs_extreme_ok(stiff_bonds -bond_k 1e8 -t_end 0.001)           # 100x the leaflet K
-dmhs_extreme_ok(high_viscosity -sph_nu 5e-4 -t_end 0.02)        # the colon study's highest nu
-dmhs_extreme_ok(strong_drive -body_force_amplitude 5 -t_end 0.02) # 10x the drive: 0.4 h deflection
+# The matrix (doc/stability.md): each case with -dt 0 runs to its end (no NaN
+# in any output; the flap's and the vein's without a crossing), and at a fixed
+# dt of 1.02 x its smallest limit stops before step 0 naming that limit. The
+# automatic runs' figures go to test-output/extreme/matrix.csv.
+set(DMHS_MATRIX_TABLE ${DMHS_EXT_OUT}/matrix.csv)
+add_test(NAME extreme_matrix_reset COMMAND ${CMAKE_COMMAND} -E rm -f ${DMHS_MATRIX_TABLE})
+set_tests_properties(extreme_matrix_reset PROPERTIES LABELS validation FIXTURES_SETUP extreme_matrix)
+function(dmhs_matrix name expect)
+  add_test(NAME extreme_${name} COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/stiff_matrix.py --exe ${DMHS_EXE}
+    --outdir ${DMHS_EXT_OUT}/${name} --name ${name} --table ${DMHS_MATRIX_TABLE} --expect "${expect}" -- ${ARGN})
+  set_tests_properties(extreme_${name} PROPERTIES LABELS validation TIMEOUT 300 FIXTURES_REQUIRED extreme_matrix
+    RESOURCE_LOCK extreme_matrix_table)
+endfunction()
+set(EXT_CROSS "fluid crossings 0")
+set(EXT_VEIN -options_file ${PROJECT_SOURCE_DIR}/input/vein-quick.opts -t_end 0.1 -checkpoint_at_end false)
+set(EXT_COLON -options_file ${PROJECT_SOURCE_DIR}/input/intestine-quick.opts -t_end 0.1 -checkpoint_at_end false)
+dmhs_matrix(soft_angles ${EXT_CROSS} ${EXT_FLAP} -angle_k 1e-4 -t_end 0.02)          # SPEC soft leaflets
+dmhs_matrix(rigid_angles ${EXT_CROSS} ${EXT_FLAP} -angle_k 0.05 -t_end 0.002)        # SPEC most rigid
+dmhs_matrix(stiff_bonds ${EXT_CROSS} ${EXT_FLAP} -bond_k 1e8 -t_end 0.001)           # 100x the leaflet K
+dmhs_matrix(high_viscosity ${EXT_CROSS} ${EXT_FLAP} -sph_nu 5e-4 -t_end 0.02)        # the colon study's highest nu
+dmhs_matrix(strong_drive ${EXT_CROSS} ${EXT_FLAP} -body_force_amplitude 5 -t_end 0.02) # 10x the drive
+dmhs_matrix(vein_soft_leaflets "crossings 0" ${EXT_VEIN} -vein_leaflet_ka 1e-4)      # k_a 1e-4 J at dx = 1e-4
+dmhs_matrix(vein_rigid_leaflets "crossings 0" ${EXT_VEIN} -vein_leaflet_ka 5e-2)     # k_a 5e-2 J
+dmhs_matrix(vein_g0_04 "crossings 0" ${EXT_VEIN} -body_force_amplitude 0.4)          # the study's strongest g0
+dmhs_matrix(colon_high_viscosity "dmhs summary" ${EXT_COLON} -sph_nu 5e-4)           # the colon study's highest nu
+dmhs_matrix(colon_strong_drive "dmhs summary" ${EXT_COLON} -peristalsis_force 1)     # 3x the quick drive
 
 add_test(NAME extreme_stiff_bonds_refused COMMAND ${DMHS_EXPECT_FAIL}
   "bond harmonic .*EXCEEDED.*pre-flight check failed" --

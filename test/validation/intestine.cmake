@@ -14,7 +14,7 @@ string(REPLACE ";" " " DMHS_MPIRUN_STR "${DMHS_MPIRUN}")
 add_test(NAME validation_intestine_quick_2ranks
          COMMAND ${DMHS_INTESTINE} --outdir ${DMHS_INTESTINE_OUT}/quick-2ranks --ranks 2 --mpirun "${DMHS_MPIRUN_STR}"
                  --compare ${DMHS_INTESTINE_OUT}/quick)
-set_tests_properties(validation_intestine_quick_2ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 120
+set_tests_properties(validation_intestine_quick_2ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 120 PROCESSORS 2
                      FIXTURES_REQUIRED intestine_quick)
 # A weir below the level (2.5 mm < L = 4.6 mm): liquid overflows from the
 # start and is parked; fluid + overflow conserved. The falling liquid comes

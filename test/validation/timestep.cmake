@@ -47,3 +47,50 @@ add_test(NAME timestep_bad_safety COMMAND ${DMHS_EXPECT_FAIL} "-dt_safety must b
   ${DMHS_EXE} ${TS_COLON} -dt 0 -dt_safety 1.5 -output_dir ${DMHS_TS_OUT}/safety)
 set_tests_properties(timestep_floor_stops timestep_fixed_outgrown_stops timestep_options_need_automatic
   timestep_bad_safety PROPERTIES LABELS validation TIMEOUT 120)
+
+# Solid sub-cycling (-solid_substeps, src/core/substep.c). Energy and momentum
+# of an isolated structure: unit_topology (test_conservation_substeps).
+# The cantilever's first frequency and its energy (E = kinetic + potential,
+# the load's work included) on 4 sub-steps per step at 4x the step: the same
+# 0.5 % tolerance as on one; measured drift 1.4e-6 of the largest kinetic
+# energy on both.
+foreach(n 1 4)
+  add_test(NAME timestep_substeps${n}_cantilever_frequency
+           COMMAND ${DMHS_CANTILEVER} --mode frequency --n 21 --ka 0.01 --tol 0.005 --energy-tol 1e-5
+                   --extra "-solid_substeps ${n}" --outdir ${DMHS_TS_OUT}/cantilever_substeps${n})
+  set_tests_properties(timestep_substeps${n}_cantilever_frequency PROPERTIES LABELS validation TIMEOUT 120)
+endforeach()
+# The flap (liquid on a solid) with automatic sub-steps (2 per step at twice
+# the step): the quick flap's checks, and the mean tip deflection of the last
+# quarter within 1 % of the plain run's (validation_flap_quick).
+add_test(NAME timestep_substeps_flap_quick
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/flap.py --exe ${DMHS_EXE}
+                 --opts ${PROJECT_SOURCE_DIR}/input/flap-quick.opts --outdir ${DMHS_TS_OUT}/flap_substeps
+                 --extra "-solid_substeps 0" --drift 0.01 --steady 0.08 --slip 0.05 --min-deflection 0.05
+                 --reference ${CMAKE_CURRENT_BINARY_DIR}/flap-quick --tip-tol 0.01)
+set_tests_properties(timestep_substeps_flap_quick PROPERTIES LABELS validation TIMEOUT 180
+                     DEPENDS validation_flap_quick)
+# rank invariance (final states, dt.csv with its substeps column) and restart
+foreach(n 1 2 3)
+  add_test(NAME timestep_substeps_np${n}
+    COMMAND ${DMHS_MPIRUN} -n ${n} ${DMHS_EXE} -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts -quiet
+            -solid_substeps 0 -t_end 0.02 -output_dir ${DMHS_TS_OUT}/substeps_np${n}
+            -dump_final ${DMHS_TS_OUT}/substeps_np${n}.csv)
+  set_tests_properties(timestep_substeps_np${n} PROPERTIES LABELS "validation;mpi" PROCESSORS ${n} TIMEOUT 300
+    FIXTURES_SETUP timestep_substeps)
+endforeach()
+add_test(NAME timestep_substeps_rank_invariance
+  COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/test/mpi/compare_dumps.py --tol 0 ${DMHS_TS_OUT}/substeps_np1.csv
+          ${DMHS_TS_OUT}/substeps_np2.csv ${DMHS_TS_OUT}/substeps_np3.csv)
+add_test(NAME timestep_substeps_dt_csv
+  COMMAND ${DMHS_DT_CSV} ${DMHS_TS_OUT}/substeps_np1 --substeps 2 --same ${DMHS_TS_OUT}/substeps_np2
+          --same ${DMHS_TS_OUT}/substeps_np3)
+set_tests_properties(timestep_substeps_rank_invariance timestep_substeps_dt_csv PROPERTIES LABELS validation
+  TIMEOUT 60 FIXTURES_REQUIRED timestep_substeps)
+dmhs_restart_test(io_restart_flap_substeps 2 2 1 0.02 -options_file ${PROJECT_SOURCE_DIR}/input/flap-quick.opts
+                  -solid_substeps 0)
+dmhs_restart_test(io_restart_cantilever_substeps 1 1 2 0.002 -options_file
+                  ${PROJECT_SOURCE_DIR}/input/cantilever.opts -output_interval 1e-4 -solid_substeps 4)
+add_test(NAME timestep_substeps_bad COMMAND ${DMHS_EXPECT_FAIL} "-solid_substeps must be in \\[0, 1000\\] \\(got -2" --
+  ${DMHS_EXE} ${TS_COLON} -solid_substeps -2 -output_dir ${DMHS_TS_OUT}/substeps_bad)
+set_tests_properties(timestep_substeps_bad PROPERTIES LABELS validation TIMEOUT 60)

@@ -9,7 +9,7 @@ set(DMHS_VEIN_OUT ${CMAKE_CURRENT_BINARY_DIR}/vein)
 string(REPLACE ";" " " DMHS_MPIRUN_STR "${DMHS_MPIRUN}")
 add_test(NAME validation_vein_quick_2ranks
          COMMAND ${DMHS_VEIN} --outdir ${DMHS_VEIN_OUT}/quick-2ranks --ranks 2 --mpirun "${DMHS_MPIRUN_STR}")
-set_tests_properties(validation_vein_quick_2ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 300
+set_tests_properties(validation_vein_quick_2ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 300 PROCESSORS 2
                      FIXTURES_SETUP vein_quick_2ranks)
 add_test(NAME validation_vein_quick COMMAND ${DMHS_VEIN} --outdir ${DMHS_VEIN_OUT}/quick
                                             --compare ${DMHS_VEIN_OUT}/quick-2ranks)
@@ -18,5 +18,5 @@ set_tests_properties(validation_vein_quick PROPERTIES LABELS validation TIMEOUT 
 add_test(NAME validation_vein_restart
          COMMAND ${DMHS_VEIN} --mode restart --outdir ${DMHS_VEIN_OUT}/restart --ranks 2 --restart-ranks 1
                  --mpirun "${DMHS_MPIRUN_STR}" --t-stop 0.3 --compare ${DMHS_VEIN_OUT}/quick-2ranks)
-set_tests_properties(validation_vein_restart PROPERTIES LABELS "validation;io;mpi" TIMEOUT 300
+set_tests_properties(validation_vein_restart PROPERTIES LABELS "validation;io;mpi" TIMEOUT 300 PROCESSORS 2
                      FIXTURES_REQUIRED vein_quick_2ranks)

@@ -1,0 +1,23 @@
+/* Solid sub-cycling (-solid_substeps N, N != 1), the scheme SPHinXsys uses
+ * for fluid-structure interaction (Zhang, Rezavand & Hu, J. Comput. Phys.
+ * 2021): the liquid takes one step of dt; the solids take N velocity-Verlet
+ * sub-steps of dt/N in which only their own bonds and angles (the
+ * solid_internal modules) are evaluated again, and every other force on them
+ * (liquid pressure and viscosity, repulsion, loads, peristalsis, damping) is
+ * held at its value from the force evaluation at the start of the step
+ * (a_hold). The liquid sees the solids' velocity predicted for the end of the
+ * step (v_est), as it sees its own; with N = 1 the step is the plain one. */
+#ifndef DMHS_SUBSTEP_H
+#define DMHS_SUBSTEP_H
+#include <petscsys.h>
+
+struct sim;
+
+/* After the liquid's first kick and drift: the solids' N sub-steps. */
+PetscErrorCode substep_solids(struct sim *s);
+/* The force evaluation when sub-cycling: the solid_internal modules first,
+ * whose share of the solids' acceleration is kept apart, then the others;
+ * a_hold = a - that share. */
+PetscErrorCode substep_compute_forces(struct sim *s);
+
+#endif
