@@ -27,6 +27,8 @@ typedef struct {
   PetscInt p1, p2;
   PetscBool bodies; /* also between different solid bodies */
   double r2_min;    /* closest approach of a repelling pair at the last compute [m^2] (inf: none) */
+  double m_min[2];  /* lightest liquid and solid particle [kg] (masses never change) */
+  PetscBool have_masses;
 } repulsion_data;
 
 PetscErrorCode repulsion_set_bodies(module *m, PetscBool on) {
@@ -184,14 +186,22 @@ static PetscErrorCode repulsion_virial(module *self, sim *s, double (*W)[3]) {
 }
 
 static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
-  const repulsion_data *d = self->data;
-  double local[3] = {INFINITY, INFINITY, d->r2_min}, m[3];
+  repulsion_data *d = self->data;
+  double m[3];
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    if (s->ps.type[i] == PTYPE_FLUID) local[0] = PetscMin(local[0], s->ps.mass[i]);
-    if (s->ps.type[i] == PTYPE_SOLID) local[1] = PetscMin(local[1], s->ps.mass[i]);
+  /* evaluated before every step: the masses once, the closest approach each time */
+  if (!d->have_masses) {
+    double local[2] = {INFINITY, INFINITY};
+    for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+      if (s->ps.type[i] == PTYPE_FLUID) local[0] = PetscMin(local[0], s->ps.mass[i]);
+      if (s->ps.type[i] == PTYPE_SOLID) local[1] = PetscMin(local[1], s->ps.mass[i]);
+    }
+    PetscCallMPI(MPI_Allreduce(local, d->m_min, 2, MPI_DOUBLE, MPI_MIN, s->comm));
+    d->have_masses = PETSC_TRUE;
   }
-  PetscCallMPI(MPI_Allreduce(local, m, 3, MPI_DOUBLE, MPI_MIN, s->comm));
+  PetscCallMPI(MPI_Allreduce(&d->r2_min, &m[2], 1, MPI_DOUBLE, MPI_MIN, s->comm));
+  m[0] = d->m_min[0];
+  m[1] = d->m_min[1];
   if (!isfinite(m[0]) || d->K <= 0) PetscFunctionReturn(0);
   /* against a wall the fluid particle moves alone; against a solid, both do;
    * two solids of different bodies: half the solid mass */

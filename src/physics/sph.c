@@ -85,15 +85,18 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
 static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
   const sph_params *sp = &s->sph;
   const double hs = 0.5 * sp->h;
-  double local[2] = {0.0, 0.0}, global[2]; /* max|v| (all), max|a| (liquid) */
+  double local[2] = {0.0, 0.0}, global[2]; /* max|v|^2 (all), max|a|^2 (liquid) */
   PetscFunctionBeginUser;
   (void)self;
+  /* evaluated before every step: squares, one root each after the reduction */
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    local[0] = PetscMax(local[0], PetscSqrtReal(s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]));
+    local[0] = PetscMax(local[0], s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
     if (s->ps.type[i] == PTYPE_FLUID)
-      local[1] = PetscMax(local[1], PetscSqrtReal(s->ps.a[i][0] * s->ps.a[i][0] + s->ps.a[i][1] * s->ps.a[i][1]));
+      local[1] = PetscMax(local[1], s->ps.a[i][0] * s->ps.a[i][0] + s->ps.a[i][1] * s->ps.a[i][1]);
   }
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
+  global[0] = PetscSqrtReal(global[0]);
+  global[1] = PetscSqrtReal(global[1]);
   const double vmax_global = global[0];
   /* Monaghan's artificial viscosity widens the signal speed by 1.2 (alpha c0 + beta max|v|) */
   const double signal = sp->c0 + vmax_global + 1.2 * (sp->av_alpha * sp->c0 + sp->av_beta * vmax_global);
