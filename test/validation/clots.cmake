@@ -11,7 +11,7 @@ set(DMHS_CLOTS_OUT ${CMAKE_CURRENT_BINARY_DIR}/clots)
 string(REPLACE ";" " " DMHS_CLOTS_MPIRUN "${DMHS_MPIRUN}")
 add_test(NAME validation_clot_quick_3ranks
          COMMAND ${DMHS_CLOTS} --outdir ${DMHS_CLOTS_OUT}/quick-3ranks --ranks 3 --mpirun "${DMHS_CLOTS_MPIRUN}")
-set_tests_properties(validation_clot_quick_3ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 300 PROCESSORS 3
+set_tests_properties(validation_clot_quick_3ranks PROPERTIES LABELS "validation;mpi" TIMEOUT 900 PROCESSORS 3
                      FIXTURES_SETUP clot_quick_3ranks)
 add_test(NAME validation_clot_quick COMMAND ${DMHS_CLOTS} --outdir ${DMHS_CLOTS_OUT}/quick
                                             --compare ${DMHS_CLOTS_OUT}/quick-3ranks)
@@ -20,7 +20,7 @@ set_tests_properties(validation_clot_quick PROPERTIES LABELS validation TIMEOUT 
 add_test(NAME validation_clot_restart
          COMMAND ${DMHS_CLOTS} --mode restart --outdir ${DMHS_CLOTS_OUT}/restart --ranks 2 --restart-ranks 1
                  --mpirun "${DMHS_CLOTS_MPIRUN}" --t-stop 0.06 --compare ${DMHS_CLOTS_OUT}/quick-3ranks)
-set_tests_properties(validation_clot_restart PROPERTIES LABELS "validation;io;mpi" TIMEOUT 300 PROCESSORS 2
+set_tests_properties(validation_clot_restart PROPERTIES LABELS "validation;io;mpi" TIMEOUT 900 PROCESSORS 2
                      FIXTURES_REQUIRED clot_quick_3ranks)
 add_test(NAME validation_clot_plot
          COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_clots.py ${DMHS_CLOTS_OUT}/quick
