@@ -12,11 +12,13 @@ check() { # NAME OUTPUT: common properties
   [ -z "$dup" ] || die "$name: listed more than once: $dup"
   dup=$(printf '%s\n' "$out" | grep -E '^[A-Z].*:$' | sort | uniq -d)
   [ -z "$dup" ] || die "$name: sections repeated: $dup"
-  printf '%s\n' "$out" | grep -qE '\(None\)|PETSc Release|Options for all PETSc programs|formerly' &&
+  # here-strings, not printf | grep -q: with pipefail, grep -q leaving at its first
+  # match kills printf by SIGPIPE on a long listing, and the pipeline then fails
+  grep -qE '\(None\)|PETSc Release|Options for all PETSc programs|formerly' <<<"$out" &&
     die "$name: PETSc clutter in the listing"
   echo "$name: $(printf '%s\n' "$out" | grep -cE '^  -') options, each once"
 }
-has() { printf '%s\n' "$2" | grep -qE -- "$3" || die "$1: no line matching /$3/"; }
+has() { grep -qE -- "$3" <<<"$2" || die "$1: no line matching /$3/"; }
 
 out=$("$EXE" -help 2>&1) || die "-help failed"
 check default "$out"
