@@ -9,10 +9,14 @@
 typedef enum { SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND } sph_kernel_kind;
 typedef enum { SPH_EOS_TAIT, SPH_EOS_LINEAR, SPH_EOS_LINEAR_SHIFTED } sph_eos_kind;
 typedef enum { SPH_DENSITY_CONTINUITY, SPH_DENSITY_SUMMATION } sph_density_kind;
+/* wall velocity for the viscous term: Adami's Shepard mirror, or the quadratic
+ * no-slip extrapolation along the wall normal (needs the to_surface field) */
+typedef enum { SPH_WALL_ADAMI, SPH_WALL_QUADRATIC } sph_wall_kind;
 
 extern const char *const sph_kernel_names[];
 extern const char *const sph_eos_names[];
 extern const char *const sph_density_names[];
+extern const char *const sph_wall_names[];
 
 typedef struct sph_params {
   sph_kernel_kind kernel;
@@ -26,6 +30,7 @@ typedef struct sph_params {
   double av_beta;
   double p_background; /* p_b [Pa] added to every EOS: p = EOS(rho) + p_b (0 = off) */
   double delta;        /* density diffusion coefficient (Molteni & Colagrossi 2009; 0 = off) */
+  sph_wall_kind wall;  /* wall velocity extrapolation (sph_wall.c) */
 } sph_params;
 
 /* Registers the sph options into s->sph (defaults already there) and returns the module. */

@@ -49,6 +49,11 @@ static const field_desc table[] = {
     ROW(pressure_force, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "N/m"),
     ROW(speed, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "m/s"),
     ROW(displacement, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "m"),
+    /* optional: a wall particle's vector to the nearest point of the wall
+     * surface, set by scenes that know their walls' geometry (the channel), for
+     * -sph_wall_extrapolation quadratic; constant for a wall moving rigidly */
+    ROW(to_surface, DMHS_DIM, FIELD_REAL,
+        FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL, "m"),
     /* optional: side of the nearest leaflet a fluid particle was last seen on
      * (-1, +1; 0 = not beside one), for the vein's crossing count */
     ROW(side, 1, FIELD_INT, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "1"),

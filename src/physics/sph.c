@@ -8,6 +8,7 @@
 const char *const sph_kernel_names[] = {"lucy", "cubic", "wendland", "sph_kernel_kind", "SPH_KERNEL_", NULL};
 const char *const sph_eos_names[] = {"tait", "linear", "linear_shifted", "sph_eos_kind", "SPH_EOS_", NULL};
 const char *const sph_density_names[] = {"continuity", "summation", "sph_density_kind", "SPH_DENSITY_", NULL};
+const char *const sph_wall_names[] = {"adami", "quadratic", "sph_wall_kind", "SPH_WALL_", NULL};
 
 typedef struct {
   sph_wall_work *wall;
@@ -41,6 +42,12 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
                              "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
                              "Colagrossi 2009; 0 = off, 0.1 usual)",
                              NULL, sp->delta, &sp->delta, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-sph_wall_extrapolation",
+      "Wall velocity of the viscous term [1]: adami (Shepard mirror, any wall shape) or quadratic "
+      "(no-slip quadratic along the wall normal, exact for quadratic profiles; needs the wall "
+      "geometry from the scene: default in the channel scenes, else adami)",
+      NULL, sph_wall_names, (PetscEnum)sp->wall, (PetscEnum *)&sp->wall, NULL));
   PetscOptionsEnd();
   PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
@@ -65,6 +72,12 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_walls, 1, MPIU_INT, MPI_SUM, s->comm));
   d->has_walls = n_walls > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(s->sph.wall != SPH_WALL_QUADRATIC || !d->has_walls || fields_enabled("to_surface"),
+             s->comm, PETSC_ERR_ARG_INCOMP,
+             "-sph_wall_extrapolation quadratic needs each wall particle's vector to the wall "
+             "surface, which scene %s does not provide (the channel scenes do): use "
+             "-sph_wall_extrapolation adami",
+             s->scn->name);
   PetscCall(sph_wall_create(&d->wall));
   PetscFunctionReturn(0);
 }
@@ -117,8 +130,12 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
   (void)self;
   PetscCall(PetscViewerASCIIPrintf(v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
                                    sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
-  PetscCall(PetscViewerASCIIPrintf(v, "sph: eos %s, background pressure %g Pa, density %s, artificial viscosity alpha = %g beta = %g, walls: Adami extrapolation\n",
-                                   sph_eos_names[sp->eos], sp->p_background, sph_density_names[sp->density], sp->av_alpha, sp->av_beta));
+  PetscCall(PetscViewerASCIIPrintf(v,
+                                   "sph: eos %s, background pressure %g Pa, density %s, artificial "
+                                   "viscosity alpha = %g beta = %g, walls: %s extrapolation\n",
+                                   sph_eos_names[sp->eos], sp->p_background,
+                                   sph_density_names[sp->density], sp->av_alpha, sp->av_beta,
+                                   sph_wall_names[sp->wall]));
   if (sp->delta > 0) PetscCall(PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
   PetscFunctionReturn(0);
 }

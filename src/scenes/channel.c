@@ -7,6 +7,7 @@
  * (diag/errors.c). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/channel.h"
 #include "dmhs/analytic.h"
 #include "dmhs/errors.h"
@@ -74,6 +75,9 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
   s->sph.eos = SPH_EOS_TAIT;
   s->sph.density = SPH_DENSITY_CONTINUITY;
   PetscCall(sim_enable_module(s, "sph", NULL));
+  /* the walls' geometry (for -sph_wall_extrapolation quadratic; the module's
+   * options are read after the scene's, so it is provided whatever they say) */
+  PetscCall(fields_enable("to_surface"));
   if (c->flow == CHANNEL_POISEUILLE) {
     PetscCall(sim_enable_module(s, "body_force", &c->body));
     PetscCall(body_force_set_default(c->body, 2e-4, 0.0));
@@ -105,8 +109,13 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
     for (PetscInt i = 0; i < c->nx; i++) {
       const double below[DMHS_DIM] = {(i + 0.5) * dx, -(k + 0.5) * dx};
       const double above[DMHS_DIM] = {(i + 0.5) * dx, c->width + (k + 0.5) * dx};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, plate, m, s->sph.rho0, NULL));
+      PetscInt lo, hi;
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, &lo));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, plate, m, s->sph.rho0, &hi));
+      /* the surfaces are y = 0 and y = l */
+      s->ps.to_surface[lo][0] = s->ps.to_surface[hi][0] = 0.0;
+      s->ps.to_surface[lo][1] = (k + 0.5) * dx;
+      s->ps.to_surface[hi][1] = -(k + 0.5) * dx;
     }
   c->nu = s->sph.nu;
   if (c->flow == CHANNEL_POISEUILLE) {
