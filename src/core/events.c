@@ -20,6 +20,7 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("SphDensity", id, &events.sph_density));
   PetscCall(PetscLogEventRegister("SphEos", id, &events.sph_eos));
   PetscCall(PetscLogEventRegister("SphWall", id, &events.sph_wall));
+  PetscCall(PetscLogEventRegister("SphCorrection", id, &events.sph_correction));
   PetscCall(PetscLogEventRegister("SphForce", id, &events.sph_force));
   PetscCall(PetscLogEventRegister("BodyForce", id, &events.body_force));
   PetscCall(PetscLogEventRegister("Diagnostics", id, &events.diagnostics));

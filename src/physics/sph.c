@@ -1,6 +1,7 @@
 /* The "sph" physics module: options, the order of the SPH passes in a step,
  * time-step limits and the echo of resolved parameters.
- *   per step: [summation density] -> EOS -> wall values -> momentum (+ continuity) */
+ *   per step: [summation density] -> EOS -> wall values -> [correction tensors]
+ *             -> momentum (+ continuity) */
 #include "dmhs/sim.h"
 #include "dmhs/integrate.h"
 #include "sph_force.h"
@@ -13,6 +14,7 @@ const char *const sph_wall_names[] = {"adami", "quadratic", "sph_wall_kind", "SP
 typedef struct {
   sph_wall_work *wall;
   sph_force_work force;
+  sph_correction_work correction;
   PetscBool has_walls; /* any wall particle on any rank: else the wall pass is skipped */
 } sph_data;
 
@@ -42,6 +44,15 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
                              "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
                              "Colagrossi 2009; 0 = off, 0.1 usual)",
                              NULL, sp->delta, &sp->delta, NULL));
+  PetscCall(PetscOptionsBool(
+      "-sph_kernel_correction",
+      "Corrected operators [1]: pressure gradient sum_j V_j (p_j - p_i) L_i grad W (exact for "
+      "linear "
+      "p, blind to a uniform p and to -sph_p_background), continuity with the corrected "
+      "divergence, "
+      "viscous term nu lap v exact for quadratic v, on any particle arrangement with a full "
+      "support; not momentum-conserving (default true in the channel scenes, else false)",
+      NULL, sp->kernel_correction, &sp->kernel_correction, NULL));
   PetscCall(PetscOptionsEnum(
       "-sph_wall_extrapolation",
       "Wall velocity of the viscous term [1]: adami (Shepard mirror, any wall shape) or quadratic "
@@ -89,7 +100,13 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
   PetscCall(sph_eos_compute(s));
   if (d->has_walls) PetscCall(sph_wall_compute(s, d->wall));
   else PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
-  PetscCall(sph_force_compute(s, &d->force));
+  if (s->sph.kernel_correction)
+    PetscCall(sph_correction_compute(s, &d->correction));
+  if (s->sph.kernel_correction)
+    PetscCall(sph_force_compute(s, &d->force, d->correction.corr,
+                                (const double(*)[2])d->correction.pair));
+  else
+    PetscCall(sph_force_compute(s, &d->force, NULL, NULL));
   PetscFunctionReturn(0);
 }
 
@@ -137,6 +154,11 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
                                    sph_density_names[sp->density], sp->av_alpha, sp->av_beta,
                                    sph_wall_names[sp->wall]));
   if (sp->delta > 0) PetscCall(PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
+  if (sp->kernel_correction)
+    PetscCall(PetscViewerASCIIPrintf(v,
+                                     "sph: kernel correction: pressure gradient exact for linear p "
+                                     "(difference form), continuity with the corrected divergence, "
+                                     "viscous term exact for quadratic v\n"));
   PetscFunctionReturn(0);
 }
 
@@ -152,6 +174,7 @@ static PetscErrorCode sph_destroy(module *self) {
   PetscFunctionBeginUser;
   PetscCall(sph_wall_destroy(&d->wall));
   PetscCall(PetscFree2(d->force.P, d->force.inv_rho));
+  PetscCall(sph_correction_destroy(&d->correction));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }

@@ -1,9 +1,10 @@
 /* The SPH momentum sweep (pressure + Morris viscosity [+ Monaghan artificial
  * viscosity]); with continuity density it also accumulates d rho/dt in the
  * same pass over pairs, as LAMMPS' sph/taitwater does: one pair loop instead
- * of two. Pair arithmetic: sph_force_iact.h. The run-time choices (kernel,
- * continuity [+ density diffusion], artificial viscosity) select one of 18
- * specialised sweeps before the loop. */
+ * of two. Pair arithmetic: sph_force_iact.h, and sph_correction_iact.h for the
+ * corrected pressure and viscous terms (-sph_kernel_correction). The run-time
+ * choices (kernel, continuity [+ density diffusion], artificial viscosity,
+ * correction) select one of 36 specialised sweeps before the loop. */
 #include "dmhs/sim.h"
 #include "dmhs/events.h"
 #include "sph_force_iact.h"
@@ -15,14 +16,18 @@ typedef struct {
   const double (*restrict x)[2], (*restrict v_est)[2], (*restrict v_visc)[2];
   const double *restrict mass, *restrict rho;
   const double *restrict P, *restrict inv_rho; /* p/rho^2 and 1/rho per particle */
+  const double *restrict p;                    /* pressure (corrected sweeps) */
   double (*restrict a)[2];
   double *restrict drho;
   const PetscInt *restrict type;
+  const sph_correction *restrict corr; /* per-row tensors (corrected sweeps only) */
+  const double (*restrict pair)[2];    /* per-pair F, 1/r^2 of the correction pass */
   double h, inv_h, norm, mu_sum, alpha, beta, c0, delta_hs_c0;
+  double nu2; /* 2 nu (corrected sweeps) */
 } force_args;
 
 SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artificial, int diffusion,
-                            const force_args *A) {
+                            int corrected, const force_args *A) {
   const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
   const double(*restrict x)[2] = A->x, (*restrict v_est)[2] = A->v_est,
         (*restrict v_visc)[2] = A->v_visc;
@@ -31,26 +36,56 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
   double(*restrict a)[2] = A->a;
   double *restrict drho = A->drho;
   const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum, h2 = h * h;
+  /* the correction pass left F and 1/r^2 of every pair: the artificial
+   * viscosity and the density diffusion, which need r and dW/dr, recompute */
+  const int cached = corrected && !artificial && !diffusion;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double rij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
-    if (r2 >= h2) continue; /* listed within the skin, not (yet) interacting */
-    const double r = sqrt(r2);
-    double w, dwdr;
-    sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
+    double r = 0.0, dwdr = 0.0, F, inv_r2;
+    if (cached) {
+      inv_r2 = A->pair[k][1];
+      if (inv_r2 == 0.0)
+        continue; /* beyond h */
+      F = A->pair[k][0];
+    } else {
+      const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
+      if (r2 >= h2)
+        continue; /* listed within the skin, not (yet) interacting */
+      r = sqrt(r2);
+      double w;
+      sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
+      inv_r2 = 1.0 / r2;
+      F = dwdr * (r * inv_r2);
+    }
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
-    double T[2];
-    sph_force_iact(rij, r, dwdr, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
+    double T[2] = {0.0, 0.0}; /* antisymmetric: a_i += m_j T, a_j -= m_i T */
+    if (corrected) {
+      /* each side with its own tensors; the j side is the i side of the reversed pair, bit for bit
+       */
+      const double rji[2] = {-rij[0], -rij[1]}, vji[2] = {-vvisc[0], -vvisc[1]};
+      const double dp = A->p[j] - A->p[i], inv_rho2 = inv_rho[i] * inv_rho[j];
+      double Ti[2], Tj[2];
+      sph_corrected_iact(rij, F, inv_r2, dp, inv_rho2, vvisc, A->nu2 * inv_rho[j], &A->corr[i], Ti);
+      sph_corrected_iact(rji, F, inv_r2, -dp, inv_rho2, vji, A->nu2 * inv_rho[i], &A->corr[j], Tj);
+      a[i][0] += mass[j] * Ti[0];
+      a[i][1] += mass[j] * Ti[1];
+      a[j][0] += mass[i] * Tj[0];
+      a[j][1] += mass[i] * Tj[1];
+    } else {
+      sph_force_iact(rij, r, dwdr, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
+    }
     if (artificial || continuity) {
       const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
       if (artificial)
         sph_force_iact_artificial_viscosity(rij, r, dwdr, rho[i], rho[j], vij, A->alpha,
                                             A->beta, A->c0, h, T);
       if (continuity) {
-        const double q = sph_continuity_iact(rij, r, dwdr, vij);
-        drho[i] += mass[j] * q;
-        drho[j] += mass[i] * q;
+        if (!corrected) { /* else -rho_i div_i per particle (sph_force_compute) */
+          const double q = sph_continuity_iact(rij, r, dwdr, vij);
+          drho[i] += mass[j] * q;
+          drho[j] += mass[i] * q;
+        }
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
         if (diffusion && A->type[i] != PTYPE_WALL && A->type[j] != PTYPE_WALL) {
           const double D = sph_density_diffusion_iact(r, dwdr, rho[i], rho[j], A->delta_hs_c0);
@@ -61,15 +96,21 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
     }
     /* ghost rows receive contributions too; they are discarded (Newton's third
      * law inside a rank only), which keeps the loop free of branches */
-    a[i][0] += mass[j] * T[0];
-    a[i][1] += mass[j] * T[1];
-    a[j][0] -= mass[i] * T[0];
-    a[j][1] -= mass[i] * T[1];
+    if (!corrected || artificial) { /* T holds the antisymmetric terms */
+      a[i][0] += mass[j] * T[0];
+      a[i][1] += mass[j] * T[1];
+      a[j][0] -= mass[i] * T[0];
+      a[j][1] -= mass[i] * T[1];
+    }
   }
 }
 
-#define SWEEP(name, K, C, AV, D)                                                                  \
-  static void name(const force_args *A) { force_sweep(K, C, AV, D, A); }
+#define SWEEP1(name, K, C, AV, D, KGC)                                                             \
+  static void name(const force_args *A) {                                                          \
+    force_sweep(K, C, AV, D, KGC, A);                                                              \
+  }
+/* each combination plain and corrected (-sph_kernel_correction) */
+#define SWEEP(name, K, C, AV, D) SWEEP1(name, K, C, AV, D, 0) SWEEP1(name##_kgc, K, C, AV, D, 1)
 SWEEP(sweep_lucy, SPH_KERNEL_LUCY, 0, 0, 0)
 SWEEP(sweep_lucy_c, SPH_KERNEL_LUCY, 1, 0, 0)
 SWEEP(sweep_lucy_av, SPH_KERNEL_LUCY, 0, 1, 0)
@@ -89,16 +130,24 @@ SWEEP(sweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1, 0)
 SWEEP(sweep_wendland_cd, SPH_KERNEL_WENDLAND, 1, 0, 1)
 SWEEP(sweep_wendland_cd_av, SPH_KERNEL_WENDLAND, 1, 1, 1)
 
-/* [kernel][density: summation, continuity, continuity + diffusion][artificial viscosity] */
-static void (*const sweeps[3][3][2])(const force_args *) = {
-    {{sweep_lucy, sweep_lucy_av}, {sweep_lucy_c, sweep_lucy_c_av}, {sweep_lucy_cd, sweep_lucy_cd_av}},
-    {{sweep_cubic, sweep_cubic_av}, {sweep_cubic_c, sweep_cubic_c_av}, {sweep_cubic_cd, sweep_cubic_cd_av}},
-    {{sweep_wendland, sweep_wendland_av},
-     {sweep_wendland_c, sweep_wendland_c_av},
-     {sweep_wendland_cd, sweep_wendland_cd_av}},
+/* [kernel][density: summation, continuity, continuity + diffusion][artificial viscosity][corrected]
+ */
+#define PAIR(name)                                                                                 \
+  { name, name##_kgc }
+static void (*const sweeps[3][3][2][2])(const force_args *) = {
+    {{PAIR(sweep_lucy), PAIR(sweep_lucy_av)},
+     {PAIR(sweep_lucy_c), PAIR(sweep_lucy_c_av)},
+     {PAIR(sweep_lucy_cd), PAIR(sweep_lucy_cd_av)}},
+    {{PAIR(sweep_cubic), PAIR(sweep_cubic_av)},
+     {PAIR(sweep_cubic_c), PAIR(sweep_cubic_c_av)},
+     {PAIR(sweep_cubic_cd), PAIR(sweep_cubic_cd_av)}},
+    {{PAIR(sweep_wendland), PAIR(sweep_wendland_av)},
+     {PAIR(sweep_wendland_c), PAIR(sweep_wendland_c_av)},
+     {PAIR(sweep_wendland_cd), PAIR(sweep_wendland_cd_av)}},
 };
 
-PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
+PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
+                                 const double (*pair)[2]) {
   particles *ps = &s->ps;
   const sph_params *sp = &s->sph;
   const int continuity = sp->density == SPH_DENSITY_CONTINUITY;
@@ -126,21 +175,29 @@ PetscErrorCode sph_force_compute(sim *s, sph_force_work *work) {
       .rho = ps->rho,
       .P = work->P,
       .inv_rho = work->inv_rho,
+      .p = ps->p,
       .a = ps->a,
       .drho = ps->drho,
       .type = ps->type,
+      .corr = corr,
+      .pair = pair,
       .h = sp->h,
       .inv_h = 1.0 / sp->h,
       .norm = sph_kernel_norm(sp->kernel, 2, sp->h),
       /* mu_i + mu_j with one liquid of dynamic viscosity rho0 nu */
       .mu_sum = 2.0 * sp->rho0 * sp->nu,
+      .nu2 = 2.0 * sp->nu,
       .alpha = sp->av_alpha,
       .beta = sp->av_beta,
       .c0 = sp->c0,
       .delta_hs_c0 = sp->delta * 0.5 * sp->h * sp->c0, /* smoothing length h_s = h/2 */
   };
   const int density = continuity ? (sp->delta > 0 ? 2 : 1) : 0;
-  sweeps[sp->kernel][density][artificial](&A);
+  sweeps[sp->kernel][density][artificial][corr ? 1 : 0](&A);
+  if (corr &&
+      continuity) /* corrected divergence (sph_correction_iact.h); zero on walls and ghosts */
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      ps->drho[i] -= ps->rho[i] * corr[i].div;
   PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs + 4.0 * (double)n));
   PetscCall(PetscLogEventEnd(events.sph_force, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -2,6 +2,7 @@
 #ifndef DMHS_SPH_INTERNAL_H
 #define DMHS_SPH_INTERNAL_H
 #include "dmhs/sim.h"
+#include "sph_correction_iact.h"
 
 /* sph_force.c: momentum (and continuity) sweep over the pair list; the work
  * arrays hold per-particle p/rho^2 and 1/rho (owned and ghost rows) */
@@ -9,7 +10,24 @@ typedef struct {
   PetscInt n_alloc;
   double *P, *inv_rho;
 } sph_force_work;
-PetscErrorCode sph_force_compute(sim *s, sph_force_work *work);
+/* corr: the per-row tensors of -sph_kernel_correction and pair: the per-pair kernel
+ * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
+PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
+                                 const double (*pair)[2]);
+/* sph_correction.c: the tensors of the corrected operators for every row: owned
+ * non-wall rows get L, G, B (the identity where the neighbourhood is too sparse),
+ * ghost and wall rows zero */
+typedef struct {
+  PetscInt n_alloc;
+  sph_moments *mom;
+  sph_correction *corr;
+  double *vol;       /* m/rho per row, negative on rows that need no moments */
+  double (*e_div)[2]; /* v_div - v_visc per row (sph_correction.c) */
+  PetscInt n_pair_alloc;
+  double (*pair)[2]; /* per pair of the list: (dW/dr)/r and 1/r^2, 0 beyond h */
+} sph_correction_work;
+PetscErrorCode sph_correction_compute(sim *s, sph_correction_work *w);
+PetscErrorCode sph_correction_destroy(sph_correction_work *w);
 /* sph_stress.c: the SPH virial, pressure force and shear rate (stress diagnostics) */
 PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
