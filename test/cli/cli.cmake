@@ -55,6 +55,11 @@ dmhs_cli_fail(cli_garbage_bool "-quiet maybe: not a boolean" ${QUICK} -quiet may
 dmhs_cli_fail(cli_missing_value "option -dt was given without a value; it takes a finite real number"
   ${QUICK} -output_dir ${DMHS_CLI_OUT}/k -dt)
 dmhs_cli_fail(cli_missing_string "option -output_dir was given without a value" ${QUICK} -output_dir)
+# the quadratic wall extrapolation needs the wall geometry, which only the channel scenes give
+dmhs_cli_fail(cli_wall_quadratic_without_geometry
+  "-sph_wall_extrapolation quadratic needs each wall particle's vector to the wall surface, which scene flap"
+  -options_file ${DMHS_INPUT}/flap-quick.opts -sph_wall_extrapolation quadratic -t_end 1e-4
+  -output_dir ${DMHS_CLI_OUT}/wall_quadratic)
 # the published dt = 1e-4 s exceeds the viscous limit at 40 x 80: refused before step 0
 dmhs_cli_fail(cli_preflight_published_dt "viscosity .*EXCEEDED.*pre-flight check failed"
   -options_file ${DMHS_INPUT}/poiseuille.opts -dt 1e-4 -output_dir ${DMHS_CLI_OUT}/f)
