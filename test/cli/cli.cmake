@@ -2,12 +2,15 @@
 # blow-up that must stop cleanly, -log_view. Label: cli.
 set(DMHS_INPUT ${PROJECT_SOURCE_DIR}/input)
 set(DMHS_EXPECT_FAIL bash ${CMAKE_CURRENT_LIST_DIR}/expect_fail.sh)
+# exit status 0 and the output matching a regex (PASS_REGULAR_EXPRESSION would ignore the status)
+set(DMHS_EXPECT_OUTPUT bash ${CMAKE_CURRENT_LIST_DIR}/expect_output.sh)
 set(DMHS_CLI_OUT ${CMAKE_BINARY_DIR}/test-output/cli)
 set(QUICK -options_file ${DMHS_INPUT}/poiseuille-quick.opts -quiet)
 
-add_test(NAME cli_help COMMAND ${DMHS_EXE} -help)
-set_tests_properties(cli_help PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "-scene <poiseuille>.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <")
+add_test(NAME cli_help COMMAND ${DMHS_EXPECT_OUTPUT}
+  "-scene <poiseuille>.*-neighbour_skin <.*-sph_h <.*support radius h \\[m\\].*-body_force <.*\\[m/s\\^2\\].*Scene couette.*-wall_speed <.*Scene box.*-box_nx.*-angle_k <.*-repulsion_rstar <.*-bond_rmax <"
+  -- ${DMHS_EXE} -help)
+set_tests_properties(cli_help PROPERTIES LABELS cli TIMEOUT 60)
 # each option once, with the chosen scene's values (test/cli/help.sh)
 add_test(NAME cli_help_scene_values COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/help.sh ${DMHS_EXE} ${DMHS_INPUT})
 set_tests_properties(cli_help_scene_values PROPERTIES LABELS cli TIMEOUT 60)
@@ -80,13 +83,13 @@ add_test(NAME cli_nonfinite_acceleration_stops COMMAND ${DMHS_EXPECT_FAIL}
   ${DMHS_EXE} ${QUICK} -gravity 1e300 -preflight warn -t_end 0.01 -output_dir ${DMHS_CLI_OUT}/gravity)
 set_tests_properties(cli_nonfinite_acceleration_stops PROPERTIES LABELS cli TIMEOUT 60)
 
-add_test(NAME cli_log_view COMMAND ${DMHS_EXE} ${QUICK} -t_end 0.01 -log_view -output_dir ${DMHS_CLI_OUT}/h)
-set_tests_properties(cli_log_view PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "SphForce.*SphWall.*BodyForce|SphWall.*SphForce")
-add_test(NAME cli_summary_line COMMAND ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -t_end 0.01
-  -output_dir ${DMHS_CLI_OUT}/i)
-set_tests_properties(cli_summary_line PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "step +[0-9]+ +t .*particle-steps/s .*ETA.*max\\|v\\|.*dmhs summary: .*particle-steps/s: [0-9.e+]+")
+add_test(NAME cli_log_view COMMAND ${DMHS_EXPECT_OUTPUT} "SphForce.*SphWall.*BodyForce|SphWall.*SphForce" --
+  ${DMHS_EXE} ${QUICK} -t_end 0.01 -log_view -output_dir ${DMHS_CLI_OUT}/h)
+set_tests_properties(cli_log_view PROPERTIES LABELS cli TIMEOUT 60)
+add_test(NAME cli_summary_line COMMAND ${DMHS_EXPECT_OUTPUT}
+  "step +[0-9]+ +t .*particle-steps/s .*ETA.*max\\|v\\|.*dmhs summary: .*particle-steps/s: [0-9.e+]+" --
+  ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -t_end 0.01 -output_dir ${DMHS_CLI_OUT}/i)
+set_tests_properties(cli_summary_line PROPERTIES LABELS cli TIMEOUT 60)
 dmhs_cli_fail(cli_bad_body_force_type "-body_force_types: 'wall' is not fluid or solid"
   -options_file ${DMHS_INPUT}/flap-quick.opts -quiet -body_force_types fluid,wall -output_dir ${DMHS_CLI_OUT}/j)
 add_test(NAME cli_slurm_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
@@ -100,10 +103,10 @@ add_test(NAME cli_vein_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_
   ${DMHS_CLI_OUT}/vein-study)
 set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
 # the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
-add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
+add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* ETA +0.0 s" --reject "ETA +-" --
+  ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
   -t_end 0.0101 -output_snapshots false -output_dir ${DMHS_CLI_OUT}/eta)
-set_tests_properties(cli_eta_not_negative PROPERTIES LABELS cli TIMEOUT 60 FAIL_REGULAR_EXPRESSION "ETA +-"
-  PASS_REGULAR_EXPRESSION "step +337 .* ETA +0.0 s")
+set_tests_properties(cli_eta_not_negative PROPERTIES LABELS cli TIMEOUT 60)
 # out of memory (a 1 GB address-space limit, 4e8 particles): says what and how much
 add_test(NAME cli_out_of_memory COMMAND ${DMHS_EXPECT_FAIL}
   "out of memory: cannot allocate 3200 MB for particle field 'gid' \\(room for 400000000 particles.*160 bytes per particle"
