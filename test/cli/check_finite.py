@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Fails (exit 1) when any CSV value or HDF5 dataset in a directory is not finite.
+"""Fails (exit 1) when any CSV value or HDF5 dataset in a directory is not finite,
+or when the directory does not exist (a wrong path must not pass as "all finite").
 
   check_finite.py DIR
 """
@@ -15,8 +16,13 @@ import numpy as np
 
 def main():
     root = sys.argv[1]
+    if not os.path.isdir(root):
+        print(f"checked {root}: FAIL: no such directory")
+        return 1
     bad = []
-    for path in glob.glob(os.path.join(root, "**", "*.csv"), recursive=True):
+    csvs = glob.glob(os.path.join(root, "**", "*.csv"), recursive=True)
+    h5s = glob.glob(os.path.join(root, "**", "*.h5"), recursive=True)
+    for path in csvs:
         with open(path, newline="") as f:
             for row in csv.reader(line for line in f if not line.startswith("#")):
                 for cell in row:
@@ -25,7 +31,7 @@ def main():
                             bad.append(f"{path}: {cell}")
                     except ValueError:
                         pass  # a header
-    for path in glob.glob(os.path.join(root, "**", "*.h5"), recursive=True):
+    for path in h5s:
         with h5py.File(path, "r") as f:
             def visit(name, obj):
                 if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f" and not np.all(np.isfinite(obj[()])):
@@ -33,7 +39,7 @@ def main():
             f.visititems(visit)
     for b in bad:
         print("non-finite:", b)
-    print(f"checked {root}: {'FAIL' if bad else 'all finite'}")
+    print(f"checked {root} ({len(csvs)} CSV, {len(h5s)} HDF5 files): {'FAIL' if bad else 'all finite'}")
     return 1 if bad else 0
 
 
