@@ -3,6 +3,7 @@ every DataItem reference resolves to a dataset of the declared dimensions and
 number type, Polyvertex NumberOfElements equals the particle count, Vector
 attributes have 3 components, times increase and match the snapshots' "time"
 attribute, and every value is finite. Usage: check_xdmf.py DIR [min_snapshots]"""
+import math
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -34,6 +35,8 @@ def main(out_dir, min_snapshots=1):
         if time is None:
             fail(f"grid {grid.get('Name')} has no Time")
         t = float(time.get("Value"))
+        if not math.isfinite(t):
+            fail(f"grid {grid.get('Name')}: time {time.get('Value')}")
         times.append(t)
         particle_grid = grid if grid.get("GridType") == "Uniform" else grid.find("Grid[@Name='particles']")
         topo = particle_grid.find("Topology")
@@ -60,7 +63,7 @@ def main(out_dir, min_snapshots=1):
                 data = d[()]
                 if d.dtype.kind == "f" and not np.all(np.isfinite(data)):
                     fail(f"{item.text.strip()}: non-finite values")
-                if abs(f.attrs["time"][0] - t) > 0:
+                if not f.attrs["time"][0] == t:  # (abs(nan - t) > 0 is false: a NaN passed)
                     fail(f"{h5name}: time attribute {f.attrs['time'][0]} != XDMF time {t}")
                 if dataset.startswith("/particles/") and dims[0] != n:
                     fail(f"{item.text.strip()}: {dims[0]} rows but NumberOfElements = {n}")

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Compares two diagnostic CSV files line by line, text for text, except the
 wall-clock columns (header names starting with 'wall', e.g. error.csv's
-wall_s), which differ from run to run. Exits 1 at the first difference.
+wall_s), which differ from run to run. Exits 1 at the first difference, and
+when a file is empty (two empty files would compare equal without a check).
 
   compare_csv.py A.csv B.csv
 """
@@ -21,6 +22,9 @@ def columns(path):
 
 def main(a_path, b_path):
     a, b = columns(a_path), columns(b_path)
+    if not a or not b:
+        print(f"{a_path} vs {b_path}: {'both files are' if not a and not b else 'a file is'} empty")
+        return 1
     for k, (x, y) in enumerate(zip(a, b)):
         if x != y:
             print(f"{a_path} vs {b_path}: line {k + 1} differs:\n  {x}\n  {y}")
