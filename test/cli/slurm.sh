@@ -17,4 +17,7 @@ if grep -q "continuing" "$W/2.log"; then echo "FAIL: a completed run was continu
 sed -i 's/"status": "completed"/"status": "signal-checkpoint"/' "$W/out/run.json"
 run -t_end 0.03 > "$W/3.log"
 grep -q "Restarted from $W/out/checkpoint.h5 at step 200" "$W/3.log" || { echo "FAIL: not continued"; cat "$W/3.log"; exit 1; }
+# the message whose absence the second run checked: without it that check proves nothing
+grep -q "dmhs.sbatch: continuing from $W/out/checkpoint.h5" "$W/3.log" ||
+  { echo "FAIL: the script does not say it continues"; cat "$W/3.log"; exit 1; }
 echo "slurm script: OK"

@@ -21,7 +21,7 @@ grep -q '"status": "error"' "$O/run.json" || { cat "$O/run.json"; die "run.json 
 grep -q '"message": ".*failed' "$O/run.json" || die "run.json lacks the message"
 "$PY" -c "import json,sys; json.load(open(sys.argv[1]))" "$O/run.json" || die "run.json is not valid JSON"
 cp "$O/checkpoint.h5" "$W/last.h5" || die "no checkpoint survived"
-t=$(h5attr "$W/last.h5" t)
+t=$(h5attr "$W/last.h5" t) && [ -n "$t" ] || die "cannot read t from the last checkpoint"
 "$EXE" "${QUICK[@]}" -t_end "$("$PY" -c "print($t + 0.0025)")" -restart "$W/last.h5" -output_dir "$W/again" \
   > "$W/again.log" 2>&1 || { tail -3 "$W/again.log"; die "the last checkpoint (t = $t s) does not restart"; }
 echo "full disk: stopped cleanly, checkpoint at t = $t s restarts: OK"
