@@ -71,7 +71,7 @@ add_test(NAME timestep_substeps_flap_quick
                  --extra "-solid_substeps 1" --drift 0.01 --steady 0.08 --slip 0.05 --min-deflection 0.05
                  --reference ${CMAKE_CURRENT_BINARY_DIR}/flap-quick --tip-tol 0.01)
 set_tests_properties(timestep_substeps_flap_quick PROPERTIES LABELS validation TIMEOUT 180
-                     DEPENDS validation_flap_quick)
+                     FIXTURES_REQUIRED flap_quick)
 # rank invariance (final states, dt.csv with its substeps column) and restart
 foreach(n 1 2 3)
   add_test(NAME timestep_substeps_np${n}
