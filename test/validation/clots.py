@@ -49,24 +49,25 @@ def check_run(args):
         fail(f"the clots did not grow: {int(rows[-1][2])} particles at the end")
     print(f"  clots.csv: {len(rows)} rows, final sizes {prev} ({int(rows[-1][2])} particles, "
           f"{int(rows[-1][3])} bonds)")
+    # the snapshot check is part of the test: no snapshot, or none at the last row's time, fails
     snaps = sorted(glob.glob(os.path.join(args.outdir, "snap_*.h5")))
-    if snaps:
-        import h5py
-        import numpy as np
-        with h5py.File(snaps[-1], "r") as f:
-            if abs(float(f.attrs["time"]) - rows[-1][1]) > 1e-6:
-                print(f"  last snapshot at t = {float(f.attrs['time'])}, last row at {rows[-1][1]}: not checked")
-                return
-            ty = np.asarray(f["particles/type"]).ravel()
-            n_clot = int((ty == 3).sum())
-            if n_clot != int(rows[-1][2]):
-                fail(f"{snaps[-1]}: {n_clot} clot particles, clots.csv says {int(rows[-1][2])}")
-            pairs = np.asarray(f["bonds/rows"])
-            both = (ty[pairs[:, 0]] == 3) & (ty[pairs[:, 1]] == 3)
-            if int(both.sum()) != int(rows[-1][3]):
-                fail(f"{snaps[-1]}: {int(both.sum())} bonds between clot particles, clots.csv says {int(rows[-1][3])}")
-            print(f"  {os.path.basename(snaps[-1])}: {n_clot} particles of type clot, {int(both.sum())} clot bonds "
-                  f"of {len(pairs)}")
+    if not snaps:
+        fail(f"no snapshot in {args.outdir} to check clots.csv against")
+    import h5py
+    import numpy as np
+    with h5py.File(snaps[-1], "r") as f:
+        if abs(float(f.attrs["time"]) - rows[-1][1]) > 1e-6:
+            fail(f"the last snapshot is at t = {float(f.attrs['time'])}, the last clots.csv row at {rows[-1][1]}")
+        ty = np.asarray(f["particles/type"]).ravel()
+        n_clot = int((ty == 3).sum())
+        if n_clot != int(rows[-1][2]):
+            fail(f"{snaps[-1]}: {n_clot} clot particles, clots.csv says {int(rows[-1][2])}")
+        pairs = np.asarray(f["bonds/rows"])
+        both = (ty[pairs[:, 0]] == 3) & (ty[pairs[:, 1]] == 3)
+        if int(both.sum()) != int(rows[-1][3]):
+            fail(f"{snaps[-1]}: {int(both.sum())} bonds between clot particles, clots.csv says {int(rows[-1][3])}")
+        print(f"  {os.path.basename(snaps[-1])}: {n_clot} particles of type clot, {int(both.sum())} clot bonds "
+              f"of {len(pairs)}")
 
 
 def main():

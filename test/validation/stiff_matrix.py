@@ -7,8 +7,9 @@
    the summary line, no non-finite value in any CSV or HDF5 file.
 2. The stability report of that run names the smallest limit L at t = 0; the
    same case at the fixed dt = 1.02 L must stop before step 0 with exit
-   status != 0, the report marking that limit EXCEEDED and the pre-flight
-   error, and no non-finite value in its outputs.
+   status 1 (dmhs's error exit; a crash or an abort is not a refusal), the
+   report marking that limit EXCEEDED and the pre-flight error, and no
+   non-finite value in its outputs.
 With --table, appends "name,limit,value_s,dt_auto_s,dt_changes,steps,wall_s"
 (the automatic run's figures) to FILE.
 """
@@ -86,9 +87,10 @@ def main():
                        text=True)
     out2 = r.stdout + r.stderr
     exceeded = [ln for ln in out2.splitlines() if ln.startswith("  " + name) and "EXCEEDED" in ln]
-    if r.returncode == 0 or not exceeded or "pre-flight check failed" not in out2:
+    if r.returncode != 1 or not exceeded or "pre-flight check failed" not in out2:
         print(out2[-3000:])
-        fail(f"{a.name}: -dt {dt:.4g} (1.02 x the {name} limit) did not stop before step 0 naming it")
+        fail(f"{a.name}: -dt {dt:.4g} (1.02 x the {name} limit) did not stop before step 0 naming it "
+             f"(exit {r.returncode}, expected 1)")
     if os.path.isdir(fixed):
         finite(fixed)
     print(f"{a.name}: -dt {dt:.4g} s stopped before step 0: {exceeded[0].strip()}")
