@@ -1,0 +1,189 @@
+/* Module body_force (src/physics/body_force.c):
+ *   a_body(t) = F                  (-body_force_period 0)
+ *   a_body(t) = F sin(2 pi t / T)  (-body_force_period T > 0)
+ * plus gravity (0, -g), added to the acceleration of the particle types it
+ * acts on (fluid by default; never walls) and left in sim->body_accel for the
+ * wall pass. Proves, against values computed here by hand:
+ *   - the constant drive with gravity on fluid only, added to what is there;
+ *   - the pulsatile drive at quarter, half, three-quarter and an arbitrary
+ *     phase; -body_force_amplitude g0 is F = (g0, 0);
+ *   - -body_force_types fluid,solid,clot; walls are refused;
+ *   - the option errors (F and amplitude together, a negative period, three
+ *     components) and the scene defaults (body_force_set_default*, _get);
+ *   - the time-step limit 0.25 sqrt(0.5 h / |a|max), |a|max = |(Fx, |Fy| + g)|. */
+#include "unit_common.h"
+#include "dmhs/sim.h"
+#include "dmhs/body_force.h"
+#include "dmhs/registry.h"
+#include "dmhs/integrate.h"
+
+static sim s;
+static module *m;
+
+static int setup(void **state) {
+  (void)state;
+  OK(PetscMemzero(&s, sizeof(s)));
+  s.comm = PETSC_COMM_SELF;
+  s.sph_enabled = PETSC_TRUE;
+  s.sph.h = 4e-4;
+  fields_reset();
+  OK(particles_create(&s.ps));
+  const double x[2] = {0, 0}, v[2] = {0, 0};
+  /* one particle of each type, in type order */
+  for (int t = 0; t < PTYPE_COUNT; t++)
+    OK(particles_add_owned(&s.ps, t, (particle_type)t, x, v, 1.0, 1000.0, NULL));
+  OK(body_force_module_create(&m));
+  return 0;
+}
+
+static int teardown(void **state) {
+  (void)state;
+  OK(m->destroy(m));
+  OK(PetscFree(m));
+  OK(particles_destroy(&s.ps));
+  OK(PetscOptionsClear(NULL));
+  options_forget();
+  return 0;
+}
+
+/* a of every particle set to (1, 2), then one compute at time t */
+static void compute_at(double t) {
+  for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+    s.ps.a[i][0] = 1.0;
+    s.ps.a[i][1] = 2.0;
+  }
+  s.t = t;
+  OK(m->compute(m, &s));
+}
+
+static void assert_accel(int type, double ax, double ay, double tol) {
+  assert_close(s.ps.a[type][0], ax, tol);
+  assert_close(s.ps.a[type][1], ay, tol);
+}
+
+static void test_constant_with_gravity(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force 0.3,-0.2 -gravity 9.81"));
+  OK(m->set_from_options(m, &s));
+  /* the options pass already leaves the value at t = 0 for the wall pass */
+  assert_close(s.body_accel[0], 0.3, 0);
+  assert_close(s.body_accel[1], -0.2 - 9.81, 1e-15);
+  compute_at(0.7);
+  assert_accel(PTYPE_FLUID, 1.3, 2.0 - 0.2 - 9.81, 1e-14);
+  assert_accel(PTYPE_WALL, 1.0, 2.0, 0);
+  assert_accel(PTYPE_SOLID, 1.0, 2.0, 0);
+  assert_accel(PTYPE_CLOT, 1.0, 2.0, 0);
+  assert_close(s.body_accel[0], 0.3, 0);
+  assert_close(s.body_accel[1], -10.01, 1e-14);
+  double F[2], T = -1;
+  OK(body_force_get(m, F, &T));
+  assert_true(F[0] == 0.3 && F[1] == -0.2 && T == 0.0);
+}
+
+static void test_pulsatile(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force_amplitude 2 -body_force_period 0.5"));
+  OK(m->set_from_options(m, &s));
+  const struct {
+    double t, ax;
+  } at[] = {{0.0, 0.0},
+            {0.125, 2.0},                     /* quarter period: sin(pi/2) = 1 */
+            {0.25, 0.0},                      /* half: sin(pi) */
+            {0.375, -2.0},                    /* three quarters */
+            {0.1, 2.0 * 0.95105651629515357}, /* sin(0.4 pi) */
+            {0.625, 2.0}};                    /* a period later: the same as at T/4 */
+  for (size_t k = 0; k < sizeof(at) / sizeof(at[0]); k++) {
+    compute_at(at[k].t);
+    assert_accel(PTYPE_FLUID, 1.0 + at[k].ax, 2.0, 1e-14);
+    assert_close(s.body_accel[0], at[k].ax, 1e-14);
+    assert_close(s.body_accel[1], 0.0, 0);
+    assert_accel(PTYPE_SOLID, 1.0, 2.0, 0);
+  }
+  double F[2], T;
+  OK(body_force_get(m, F, &T));
+  assert_true(F[0] == 2.0 && F[1] == 0.0 && T == 0.5);
+}
+
+static void test_types(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force 0,-1 -body_force_types solid,clot"));
+  OK(m->set_from_options(m, &s));
+  compute_at(0.0);
+  assert_accel(PTYPE_FLUID, 1.0, 2.0, 0); /* the list replaces the default */
+  assert_accel(PTYPE_WALL, 1.0, 2.0, 0);
+  assert_accel(PTYPE_SOLID, 1.0, 1.0, 0);
+  assert_accel(PTYPE_CLOT, 1.0, 1.0, 0);
+}
+
+static void test_walls_refused(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force_types fluid,wall"));
+  assert_int_equal(m->set_from_options(m, &s), PETSC_ERR_ARG_OUTOFRANGE);
+}
+
+static void test_option_errors(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force 1,0 -body_force_amplitude 2"));
+  assert_int_equal(m->set_from_options(m, &s), PETSC_ERR_ARG_INCOMP);
+  OK(PetscOptionsClear(NULL));
+  OK(PetscOptionsInsertString(NULL, "-body_force_period -1"));
+  assert_int_equal(m->set_from_options(m, &s), PETSC_ERR_ARG_OUTOFRANGE);
+  OK(PetscOptionsClear(NULL));
+  OK(PetscOptionsInsertString(NULL, "-body_force 1,0,0"));
+  assert_true(m->set_from_options(m, &s) != 0);
+}
+
+static void test_scene_defaults(void **state) {
+  (void)state;
+  double F[2], T;
+  OK(body_force_set_default(m, 2e-4, 0.0));
+  OK(body_force_set_default_period(m, 0.206));
+  OK(m->set_from_options(m, &s)); /* no options: the scene's values stay */
+  OK(body_force_get(m, F, &T));
+  assert_true(F[0] == 2e-4 && F[1] == 0.0 && T == 0.206);
+  compute_at(0.206 / 4);
+  assert_accel(PTYPE_FLUID, 1.0 + 2e-4, 2.0, 1e-16);
+  OK(body_force_get(m, NULL, NULL));
+  /* body_force_get on another module is an error, not a read of its data */
+  module *other;
+  OK(registry_initialize());
+  OK(registry_create_module("peristalsis", &other));
+  assert_int_equal(body_force_get(other, F, &T), PETSC_ERR_ARG_WRONG);
+  OK(other->destroy(other));
+  OK(PetscFree(other));
+  OK(registry_finalize());
+}
+
+static void test_max_dt(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force 0.3,-0.2 -gravity 9.81"));
+  OK(m->set_from_options(m, &s));
+  dt_limits l = {0};
+  int which;
+  OK(m->max_dt(m, &s, &l));
+  assert_int_equal(l.n, 1);
+  /* |a|max = sqrt(0.3^2 + (0.2 + 9.81)^2) */
+  const double amax = sqrt(0.09 + 10.01 * 10.01), want = 0.25 * sqrt(0.5 * 4e-4 / amax);
+  const double got = dt_limits_min(&l, &which);
+  assert_true(got <= want && got >= want * (1.0 - 0x1p-23)); /* limits are rounded down */
+  /* no drive, no gravity: no limit */
+  OK(PetscOptionsClear(NULL));
+  OK(PetscOptionsInsertString(NULL, "-body_force 0,0 -gravity 0"));
+  OK(m->set_from_options(m, &s));
+  dt_limits none = {0};
+  OK(m->max_dt(m, &s, &none));
+  assert_int_equal(none.n, 0);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(test_constant_with_gravity, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_pulsatile, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_types, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_walls_refused, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_option_errors, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_scene_defaults, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_max_dt, setup, teardown),
+  };
+  return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
+}
