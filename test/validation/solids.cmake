@@ -1,4 +1,4 @@
-# Solids (issue 3): the two-layer mass-spring cantilever against Timoshenko
+# Solids: the two-layer mass-spring cantilever against Timoshenko
 # beam theory (doc/theory.md, "Mass-spring leaflets as Timoshenko beams").
 # Static tip deflection: long/stiff-angled (bending ~100 %) to short/soft-angled
 # (shear 60-94 %), tolerance 1 %. First frequency: 0.5 % where bending
