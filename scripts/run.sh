@@ -20,7 +20,7 @@ np="${DMHS_NP:-1}"
 mpirun_flags=(--oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
 mpirun "${mpirun_flags[@]}" -n "$np" "$build/dmhs" -options_file "$opts" "$@"
-# The output directory is the one the options chose; post-process it if it has an error history.
+# The output directory is the one the options chose; post-process what the scene wrote.
 outdir=$(awk '$1=="-output_dir"{print $2}' "$opts" | tail -n 1)
 for ((i = 1; i <= $#; i++)); do
   if [ "${!i}" = "-output_dir" ]; then j=$((i + 1)); outdir="${!j}"; fi
@@ -43,4 +43,12 @@ if [ -f "$outdir/vein.csv" ]; then
   if [ -f "$outdir/clots.csv" ]; then
     /usr/bin/python3 "$repo/scripts/post/plot_clots.py" "$outdir"
   fi
+fi
+# solids: the cantilever's tip against beam theory; the flap's tip and slip
+# against time and its settled flow
+if [ -f "$outdir/cantilever.csv" ]; then
+  /usr/bin/python3 "$repo/scripts/post/plot_cantilever.py" "$outdir"
+fi
+if [ -f "$outdir/flap.csv" ]; then
+  /usr/bin/python3 "$repo/scripts/post/plot_flap.py" "$outdir"
 fi

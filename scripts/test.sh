@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the test suite: installs what is missing, builds, then ctest.
-#   scripts/test.sh                 default set (unit, cli, mpi, validation)
+#   scripts/test.sh                 default set (every label but full)
 #   scripts/test.sh -L full         the long runs (published resolution)
 # Extra arguments go to ctest.
 set -euo pipefail

@@ -13,5 +13,7 @@ PetscErrorCode solid_load_module_create(module **m);
 PetscErrorCode solid_load_set_default(module *m, double fx, double fy, double gamma);
 /* The resolved load [N]. */
 PetscErrorCode solid_load_get_force(module *m, double F[2]);
+/* The resolved damping rate gamma [1/s]. */
+PetscErrorCode solid_load_get_damping(module *m, double *gamma);
 
 #endif

@@ -2,13 +2,16 @@
 """Error against run time: Poiseuille (or Couette) over resolution and time step.
 
   scripts/post/sweep_channel.py [--dmhs build/dmhs] [--case poiseuille] [--t-end 1]
-                                [--out doc/img] [--table doc/validation-sweep.md]
+                                [--work output/sweep] [--out DIR] [--table FILE]
 
 Runs dmhs at 10x20, 20x40 and 40x80 liquid particles (h = 3 dx) with dt at
 0.25, 0.5 and 0.9 of the viscous limit 0.125 (h/2)^2/nu, to --t-end, and
 records the L2 error at the end and the wall-clock of the step loop. Writes
-sweep_<case>.png (error against wall-clock, one line per resolution) and a
-Markdown table. Wall-clock is noisy on a shared machine: compare ratios.
+sweep_<case>.png (error against wall-clock, one line per resolution) into
+--out (default: the --work directory, where the runs go; `--out doc/img`
+replaces the figure of doc/validation.md) and prints a Markdown table (--table
+also writes it to a file). Wall-clock is noisy on a shared machine: compare
+ratios.
 """
 import argparse
 import csv
@@ -49,10 +52,12 @@ def main():
     ap.add_argument("--dmhs", default="build/dmhs")
     ap.add_argument("--case", default="poiseuille", choices=["poiseuille", "couette"])
     ap.add_argument("--t-end", type=float, default=1.0)
-    ap.add_argument("--work", default="output/sweep")
-    ap.add_argument("--out", default="doc/img")
+    ap.add_argument("--work", default="output/sweep", help="directory of the runs (default: output/sweep)")
+    ap.add_argument("--out", default=None, help="directory of sweep_<case>.png (default: the --work directory)")
     ap.add_argument("--table", default=None, help="write the Markdown table here (default: print only)")
     args = ap.parse_args()
+    if args.out is None:
+        args.out = args.work
     os.makedirs(args.out, exist_ok=True)
     results = []
     for nx, ny in RESOLUTIONS:

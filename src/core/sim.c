@@ -23,6 +23,7 @@ const char *const preflight_action_names[] = {"error", "warn", "preflight_action
 
 static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len) {
   char names[256];
+  PetscBool traceback = PETSC_FALSE; /* acted on by main, before any option is read here */
   PetscFunctionBeginUser;
   PetscCall(registry_scene_names(names, sizeof(names)));
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
@@ -41,6 +42,9 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
                              "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
                              "and pairs every step)",
                              NULL, s->skin_ratio, &s->skin_ratio, NULL));
+  PetscCall(PetscOptionsBool("-dmhs_traceback",
+                             "On an error, PETSc's full traceback instead of the one-line message", NULL,
+                             traceback, &traceback, NULL));
   PetscOptionsEnd();
   PetscCall(timestep_set_from_options(s));
   PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)", s->t_end);

@@ -33,6 +33,13 @@ PetscErrorCode solid_load_get_force(module *m, double F[2]) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode solid_load_get_damping(module *m, double *gamma) {
+  const solid_load_data *d = m->data;
+  PetscFunctionBeginUser;
+  *gamma = d->gamma;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode solid_load_set_from_options(module *self, sim *s) {
   solid_load_data *d = self->data;
   PetscInt n = DMHS_DIM;

@@ -8,7 +8,8 @@
  *   ws = (pi/2) sqrt(kGA/(mu L^2)).
  * Output: <output_dir>/cantilever.csv, one row per output interval:
  *   t, tip_dx, tip_dy (mean displacement of the tip column [m]), kinetic and
- *   potential energy [J]; header lines '# key = value' give the beam constants.
+ *   potential energy [J]; header lines '# key = value' give the beam constants,
+ *   the load F [N] and the damping rate gamma [1/s] (scripts/post/plot_cantilever.py).
  *   A restart continues the file (csv.h). */
 #include <math.h>
 #include <errno.h>
@@ -69,7 +70,7 @@ static PetscErrorCode cantilever_open_csv(cantilever_data *c, sim *s) {
   char header[1024];
   bond_style style;
   const bond_params *bp;
-  double F[2], ka, th0;
+  double F[2], ka, th0, gamma;
   PetscFunctionBeginUser;
   if (s->rank) PetscFunctionReturn(0);
   PetscCall(bond_get_params(s, &style, &bp));
@@ -77,14 +78,16 @@ static PetscErrorCode cantilever_open_csv(cantilever_data *c, sim *s) {
       style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
   PetscCall(solid_load_get_force(c->load, F));
   c->F = -F[1]; /* downward tip load */
+  PetscCall(solid_load_get_damping(c->load, &gamma));
   PetscCall(angle_get_params(s, &ka, &th0));
   snprintf(header, sizeof(header),
            "# cantilever: two-layer mass-spring strip (doc/theory.md)\n"
            "# n = %d\n# n_clamp = %d\n# r0 = %.10g\n# mass = %.10g\n# k_s = %.10g\n# k_a = %.10g\n"
-           "# L = %.10g\n# EI = %.10g\n# kGA = %.10g\n# mu = %.10g\n# F = %.10g\n# dt = %.10g\n"
+           "# L = %.10g\n# EI = %.10g\n# kGA = %.10g\n# mu = %.10g\n# F = %.10g\n# gamma = %.10g\n"
+           "# dt = %.10g\n"
            "t,tip_dx,tip_dy,kinetic,potential\n",
            (int)c->st.n, (int)c->st.n_clamp, c->st.spacing, c->st.mass, k_s, ka, c->L, c->EI,
-           c->kGA, c->mu, c->F, s->dt);
+           c->kGA, c->mu, c->F, gamma, s->dt);
   PetscCall(csv_open(s, "cantilever.csv", header, &c->csv));
   PetscFunctionReturn(0);
 }

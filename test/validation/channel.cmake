@@ -1,4 +1,4 @@
-# Poiseuille and Couette against the series solutions (SPEC 4.1, 5).
+# Poiseuille and Couette against the series solutions.
 # Thresholds: the published resolution must beat LAMMPS' SPH on the same setup
 # (Poiseuille 0.2/1.3/3.1 %, Couette 1.6/0.9/0.5 % at t = 0.01/0.1/1 s) at every
 # time, so 0.2 % is asserted; the quick variants assert about 1.5-2x what they
@@ -39,7 +39,7 @@ dmhs_channel_case(validation_poiseuille_quick poiseuille-quick.opts LABEL valida
   CHECKS 0.01:0.0003 0.1:0.0006 1:0.00001)
 dmhs_channel_case(validation_couette_quick couette-quick.opts LABEL validation
   CHECKS 0.01:0.0025 0.1:0.0005 1:0.00001)
-# the published resolution runs in ~40 s each: cheap enough for the default set
+# the published resolution runs in ~2 min each (approximate): cheap enough for the default set
 dmhs_channel_case(validation_poiseuille_published poiseuille.opts LABEL validation
   CHECKS 0.01:0.002 0.1:0.002 1:0.002)
 dmhs_channel_case(validation_couette_published couette.opts LABEL validation

@@ -1,4 +1,4 @@
-# Solids (issue 3): the two-layer mass-spring cantilever against Timoshenko
+# Solids: the two-layer mass-spring cantilever against Timoshenko
 # beam theory (doc/theory.md, "Mass-spring leaflets as Timoshenko beams").
 # Static tip deflection: long/stiff-angled (bending ~100 %) to short/soft-angled
 # (shear 60-94 %), tolerance 1 %. First frequency: 0.5 % where bending
@@ -45,3 +45,35 @@ add_test(NAME validation_flap_full
                  --opts ${PROJECT_SOURCE_DIR}/input/flap.opts --outdir ${CMAKE_CURRENT_BINARY_DIR}/flap-full
                  --drift 0.03 --steady 0.015 --slip 0.05 --min-deflection 0.3)
 set_tests_properties(validation_flap_full PROPERTIES LABELS full TIMEOUT 1800)
+
+# Plots of these runs (scripts/post/plot_cantilever.py, plot_flap.py, which
+# scripts/run.sh calls): each script runs on the output of a quick test above
+# (its fixture), writes its PNGs into that run's directory (the default, as for
+# a user's run; the PNGs are deleted first), and validation_solid_plots_check
+# asserts that every PNG exists and is larger than 10 kB (vein_plots.cmake run
+# as a script). The damped static run and the free oscillation draw the two
+# variants of the cantilever's second panel.
+set_tests_properties(validation_cantilever_static_n21_ka0.01 PROPERTIES FIXTURES_SETUP cantilever_static_n21)
+set_tests_properties(validation_cantilever_frequency_n21_ka0.01 PROPERTIES FIXTURES_SETUP cantilever_frequency_n21)
+set_tests_properties(validation_flap_quick PROPERTIES FIXTURES_SETUP flap_quick)
+set(DMHS_SOLID_PNGS ${CMAKE_CURRENT_BINARY_DIR}/cantilever_static_n21_ka0.01/cantilever.png
+    ${CMAKE_CURRENT_BINARY_DIR}/cantilever_frequency_n21_ka0.01/cantilever.png
+    ${CMAKE_CURRENT_BINARY_DIR}/flap-quick/flap_history.png ${CMAKE_CURRENT_BINARY_DIR}/flap-quick/flap_flow.png)
+add_test(NAME validation_solid_plots_clean COMMAND ${CMAKE_COMMAND} -E rm -f ${DMHS_SOLID_PNGS})
+set_tests_properties(validation_solid_plots_clean PROPERTIES LABELS validation TIMEOUT 30
+                     FIXTURES_SETUP solid_plots_clean)
+foreach(mode static frequency)
+  add_test(NAME validation_cantilever_${mode}_plot
+           COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_cantilever.py
+                   ${CMAKE_CURRENT_BINARY_DIR}/cantilever_${mode}_n21_ka0.01)
+  set_tests_properties(validation_cantilever_${mode}_plot PROPERTIES LABELS validation TIMEOUT 120
+                       FIXTURES_REQUIRED "cantilever_${mode}_n21;solid_plots_clean" FIXTURES_SETUP solid_plots)
+endforeach()
+add_test(NAME validation_flap_quick_plot
+         COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_flap.py ${CMAKE_CURRENT_BINARY_DIR}/flap-quick)
+set_tests_properties(validation_flap_quick_plot PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED "flap_quick;solid_plots_clean" FIXTURES_SETUP solid_plots)
+add_test(NAME validation_solid_plots_check
+         COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_LIST_DIR}/vein_plots.cmake ${DMHS_SOLID_PNGS})
+set_tests_properties(validation_solid_plots_check PROPERTIES LABELS validation TIMEOUT 30
+                     FIXTURES_REQUIRED solid_plots)

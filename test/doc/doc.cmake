@@ -1,0 +1,8 @@
+# The documentation against the code. Label: doc.
+# doc_options_table: every option that `dmhs -scene S -help` lists, for every
+# scene, is in an option table of doc/user-guide.md, and the tables list no
+# option that the code does not register (test/doc/options_table.py).
+add_test(NAME doc_options_table
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/options_table.py ${DMHS_EXE}
+                 ${PROJECT_SOURCE_DIR}/doc/user-guide.md)
+set_tests_properties(doc_options_table PROPERTIES LABELS doc TIMEOUT 60)
