@@ -78,6 +78,13 @@ PetscErrorCode sim_destroy(sim **s);
 PetscErrorCode sim_enable_module(sim *s, const char *name, module **out);
 /* Runs every enabled module's compute on the current positions: the force evaluation. */
 PetscErrorCode sim_compute_forces(sim *s);
+/* Which modules a force evaluation runs: those for which it is true. */
+typedef PetscBool (*module_filter)(const module *m);
+/* Zeroes a and drho of the owned and ghost rows, then sim_add_module_forces. */
+PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep);
+/* Runs the compute of every enabled module keep accepts (NULL: all), in the
+ * order they were enabled; each adds to a and drho. */
+PetscErrorCode sim_add_module_forces(sim *s, module_filter keep);
 /* Rebuilds ghosts and pairs for the current positions. */
 PetscErrorCode sim_rebuild_neighbours(sim *s);
 /* Per step: migrate + rebuild when due (or forced), else refresh the ghosts. */

@@ -37,11 +37,12 @@ struct dt_limits;
 #define SUBSTEPS_MAX 1000
 
 typedef struct timestep {
-  PetscBool adaptive; /* -dt 0 */
-  double safety;      /* -dt_safety [1] */
-  double growth;      /* -dt_growth [1]: largest dt_new/dt_old of one step */
-  double dt_min;      /* -dt_min [s] (0 until the first automatic dt sets it) */
-  char binding[32];   /* the smallest limit at the last evaluation */
+  PetscBool adaptive;              /* -dt 0 (set by timestep_choose_first) */
+  PetscBool automatic_options_set; /* -dt_safety, -dt_growth or -dt_min was given */
+  double safety;                   /* -dt_safety [1] */
+  double growth;                   /* -dt_growth [1]: largest dt_new/dt_old of one step */
+  double dt_min;                   /* -dt_min [s] (0 until the first automatic dt sets it) */
+  char binding[32];                /* the smallest limit at the last evaluation */
   double binding_value;
   double t_anchor; /* time and step of the last dt change */
   PetscInt step_anchor;

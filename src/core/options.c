@@ -10,6 +10,7 @@
 #include <strings.h>
 #include "dmhs/sim.h"
 #include "dmhs/options.h"
+#include "dmhs/strbuf.h"
 
 /* ---- the values every reader returned -------------------------------------
  * For the restart comparison (exact values) and for -help (the section, the
@@ -192,10 +193,10 @@ PetscErrorCode options_physics(char **text) {
   for (size_t k = 0; k < options_n_seen; k++) {
     if (options_is_run_control(sorted[k]->name))
       continue;
-    PetscCall(PetscStrlcat(*text, sorted[k]->name, len));
-    PetscCall(PetscStrlcat(*text, " ", len));
-    PetscCall(PetscStrlcat(*text, sorted[k]->value, len));
-    PetscCall(PetscStrlcat(*text, "\n", len));
+    PetscCall(strbuf_cat(*text, len, sorted[k]->name));
+    PetscCall(strbuf_cat(*text, len, " "));
+    PetscCall(strbuf_cat(*text, len, sorted[k]->value));
+    PetscCall(strbuf_cat(*text, len, "\n"));
   }
   PetscCall(PetscFree(sorted));
   PetscFunctionReturn(0);
@@ -451,8 +452,8 @@ PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char t
   n -= 2; /* PETSc enum lists end with the type name and the prefix */
   for (int k = 0; k < n; k++) {
     if (k)
-      PetscCall(PetscStrlcat(choices, ", ", sizeof(choices)));
-    PetscCall(PetscStrlcat(choices, list[k], sizeof(choices)));
+      PetscCall(strbuf_cat(choices, sizeof(choices), ", "));
+    PetscCall(strbuf_cat(choices, sizeof(choices), list[k]));
   }
   PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
   if (found) {
@@ -511,6 +512,7 @@ PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], cons
                                     const char man[], char *value[], PetscInt *n, PetscBool *set) {
   const char *raw;
   PetscBool found;
+  char v[1024] = ""; /* the values as recorded, joined by commas */
   PetscFunctionBeginUser;
   PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
   if (found) {
@@ -518,17 +520,18 @@ PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], cons
     snprintf(takes, sizeof(takes), "up to %d names separated by commas", (int)*n);
     PetscCall(options_need_value(po->comm, opt, raw, takes, text));
     PetscCall(options_check_list(po->comm, opt, raw, *n, 1, text));
+    PetscCheck(strlen(raw) < sizeof(v), po->comm, PETSC_ERR_ARG_SIZ,
+               "%s %s: longer than %zu characters", opt, raw, sizeof(v) - 1);
   }
   PetscBool given;
   PetscCall(PetscOptionsStringArray_Private(po, opt, text, man, value, n, &given));
   if (set)
     *set = given;
   {
-    char v[1024] = "";
     for (PetscInt k = 0; given && k < *n; k++) {
       if (k)
-        PetscCall(PetscStrlcat(v, ",", sizeof(v)));
-      PetscCall(PetscStrlcat(v, value[k], sizeof(v)));
+        PetscCall(strbuf_cat(v, sizeof(v), ","));
+      PetscCall(strbuf_cat(v, sizeof(v), value[k]));
     }
     PetscCall(options_record(po, opt, text, given ? v : "(default)", given ? v : "default"));
   }

@@ -4,6 +4,7 @@
 #include <string.h>
 #include "dmhs/registry.h"
 #include "dmhs/sim.h"
+#include "dmhs/strbuf.h"
 #include "dmhs/body_force.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
@@ -68,8 +69,8 @@ PetscErrorCode registry_scene_names(char *buf, size_t len) {
   PetscFunctionBeginUser;
   buf[0] = 0;
   for (size_t k = 0; k < N_SCENES; k++) {
-    if (k) PetscCall(PetscStrlcat(buf, ", ", len));
-    PetscCall(PetscStrlcat(buf, scene_table[k].name, len));
+    if (k) PetscCall(strbuf_cat(buf, len, ", "));
+    PetscCall(strbuf_cat(buf, len, scene_table[k].name));
   }
   PetscFunctionReturn(0);
 }

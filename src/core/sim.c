@@ -229,17 +229,30 @@ PetscErrorCode sim_rebuild_as_last_built(sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode sim_compute_forces(sim *s) {
+PetscErrorCode sim_add_module_forces(sim *s, module_filter keep) {
+  PetscFunctionBeginUser;
+  for (int m = 0; m < s->n_modules; m++)
+    if (!keep || keep(s->modules[m])) PetscCall(s->modules[m]->compute(s->modules[m], s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep) {
   particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
+  PetscFunctionBeginUser;
+  PetscCall(PetscArrayzero(ps->a, n));
+  PetscCall(PetscArrayzero(ps->drho, n));
+  PetscCall(sim_add_module_forces(s, keep));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_compute_forces(sim *s) {
   PetscFunctionBeginUser;
   if (s->ts.subcycling) {
     PetscCall(substep_compute_forces(s)); /* the solids' own share kept apart */
     PetscFunctionReturn(0);
   }
-  PetscCall(PetscArrayzero(ps->a, n));
-  PetscCall(PetscArrayzero(ps->drho, n));
-  for (int m = 0; m < s->n_modules; m++) PetscCall(s->modules[m]->compute(s->modules[m], s));
+  PetscCall(sim_compute_module_forces(s, NULL));
   PetscFunctionReturn(0);
 }
 

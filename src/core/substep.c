@@ -6,12 +6,22 @@
 #include "dmhs/halo.h"
 #include "dmhs/events.h"
 
+/* module filters: the solids' own forces (bonds, angles), and every other */
+static PetscBool substep_internal(const module *m) {
+  return m->solid_internal;
+}
+
+static PetscBool substep_external(const module *m) {
+  return m->solid_internal ? PETSC_FALSE : PETSC_TRUE;
+}
+
+/* A sub-step's evaluation: the solids' own modules, which write no drho (the
+ * step's next force evaluation zeroes it). */
 static PetscErrorCode substep_internal_forces(sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   PetscCall(PetscArrayzero(ps->a, ps->n_owned + ps->n_ghost));
-  for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->solid_internal) PetscCall(s->modules[m]->compute(s->modules[m], s));
+  PetscCall(sim_add_module_forces(s, substep_internal));
   PetscFunctionReturn(0);
 }
 
@@ -57,14 +67,10 @@ PetscErrorCode substep_solids(sim *s) {
 PetscErrorCode substep_compute_forces(sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  PetscCall(PetscArrayzero(ps->a, ps->n_owned + ps->n_ghost));
-  PetscCall(PetscArrayzero(ps->drho, ps->n_owned + ps->n_ghost));
-  for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->solid_internal) PetscCall(s->modules[m]->compute(s->modules[m], s));
+  PetscCall(sim_compute_module_forces(s, substep_internal));
   for (PetscInt i = 0; i < ps->n_owned; i++)
     for (int k = 0; k < DMHS_DIM; k++) ps->a_hold[i][k] = ps->a[i][k];
-  for (int m = 0; m < s->n_modules; m++)
-    if (!s->modules[m]->solid_internal) PetscCall(s->modules[m]->compute(s->modules[m], s));
+  PetscCall(sim_add_module_forces(s, substep_external));
   for (PetscInt i = 0; i < ps->n_owned; i++)
     for (int k = 0; k < DMHS_DIM; k++) ps->a_hold[i][k] = ps->a[i][k] - ps->a_hold[i][k];
   PetscFunctionReturn(0);

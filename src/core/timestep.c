@@ -57,8 +57,7 @@ PetscErrorCode timestep_set_from_options(sim *s) {
              ts->dt_min);
   /* a scene may still pick its own default dt: which options belong to the
    * automatic dt is checked once dt is known (timestep_choose_first) */
-  ts->adaptive = (safety_set || growth_set || min_set) ? PETSC_TRUE
-                                                       : PETSC_FALSE; /* "was one given" for now */
+  ts->automatic_options_set = (safety_set || growth_set || min_set) ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
@@ -151,9 +150,8 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
   timestep *ts = &s->ts;
   int which;
   PetscFunctionBeginUser;
-  const PetscBool options_given = ts->adaptive;
   ts->adaptive = s->dt <= 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(ts->adaptive || !options_given, s->comm, PETSC_ERR_ARG_INCOMP,
+  PetscCheck(ts->adaptive || !ts->automatic_options_set, s->comm, PETSC_ERR_ARG_INCOMP,
              "-dt_safety, -dt_growth and -dt_min apply to the automatic time step only; with -dt "
              "%g (fixed) drop them or give -dt 0",
              s->dt);

@@ -4,7 +4,8 @@
  *     name and creates an object of that name with the callbacks the step
  *     loop calls; the interaction needs of the pair and bonded modules;
  *   - an unknown scene or module is an error, not a NULL object;
- *   - registry_scene_names lists the scenes in order;
+ *   - registry_scene_names lists the scenes in order, in a buffer of exactly
+ *     the length needed, and refuses a buffer too small without writing past it;
  *   - initialize twice is harmless, finalize then initialize works again;
  *   - sim_enable_module adds a module once and refuses it twice. */
 #include <string.h>
@@ -102,9 +103,21 @@ static void test_scene_names(void **state) {
   char buf[256];
   OK(registry_scene_names(buf, sizeof(buf)));
   assert_string_equal(buf, "poiseuille, couette, box, cantilever, flap, intestine, vein");
-  /* (no test of a buffer too small: PETSc 3.18's PetscStrlcat bounds the copy by
-   * n - strlen(t), not n - strlen(s) - 1, so it truncates wrongly and can write
-   * past the buffer; every caller passes 256 bytes) */
+  /* exactly big enough: the whole list */
+  const size_t need = strlen(buf) + 1;
+  char exact[80];
+  assert_true(need <= sizeof(exact));
+  OK(registry_scene_names(exact, need));
+  assert_string_equal(exact, buf);
+  /* one byte short, or much too small: an error, nothing written past the buffer */
+  memset(exact, 'x', sizeof(exact));
+  assert_int_equal(registry_scene_names(exact, need - 1), PETSC_ERR_ARG_SIZ);
+  assert_string_equal(exact, "poiseuille, couette, box, cantilever, flap, intestine, ");
+  assert_int_equal(exact[need - 1], 'x');
+  memset(exact, 'x', sizeof(exact));
+  assert_int_equal(registry_scene_names(exact, 12), PETSC_ERR_ARG_SIZ);
+  assert_string_equal(exact, "poiseuille");
+  assert_int_equal(exact[12], 'x');
 }
 
 static void test_initialize_finalize(void **state) {
