@@ -36,6 +36,7 @@
 #include "dmhs/gather.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
+#include "dmhs/liquid_state.h"
 
 #define VEIN_FIXED 1e-12 /* fixed-point unit of velocity sums [m/s] */
 
@@ -305,22 +306,6 @@ static PetscErrorCode vein_particle_values(sim *s, PetscInt64 gid, double *stres
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode vein_liquid_bounds(sim *s, double *rho_dev, double *mach) {
-  const particles *ps = &s->ps;
-  double buf[2] = {0, 0};
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID)
-      continue;
-    buf[0] = PetscMax(buf[0], fabs(ps->rho[i] / s->sph.rho0 - 1.0));
-    buf[1] = PetscMax(buf[1], hypot(ps->v[i][0], ps->v[i][1]) / s->sph.c0);
-  }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, 2, MPI_DOUBLE, MPI_MAX, s->comm));
-  *rho_dev = buf[0];
-  *mach = buf[1];
-  PetscFunctionReturn(0);
-}
-
 /* The sinus liquid, one row per particle in gid order, on rank 0. */
 static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) {
   const particles *ps = &s->ps;
@@ -395,7 +380,7 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
   PetscInt64 peak_gid = -1;
   PetscCall(vein_station(v, s, &u_mean, &u_centre));
   PetscCall(vein_sinus_peak(v, s, &peak, &peak_gid));
-  PetscCall(vein_liquid_bounds(s, &rho_dev, &mach));
+  PetscCall(liquid_state_bounds(s, &rho_dev, &mach));
   PetscCallMPI(MPI_Allreduce(&v->crossings_local, &v->crossings, 1, MPIU_INT64, MPI_SUM, s->comm));
   for (int w = 0; w < 2; w++)
     vein_column_mid(v, w, v->lay.leaflet[w].n_columns - 1, tip[w]);

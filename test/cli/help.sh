@@ -36,10 +36,11 @@ out=$("$EXE" -options_file "$IN/intestine-quick.opts" -help 2>&1) || die "intest
 check intestine "$out"
 has intestine "$out" '^  -scene <intestine> '
 has intestine "$out" '^  -sph_h <0.00125> '
-has intestine "$out" '^  -sph_c0 <1> '
+has intestine "$out" '^  -sph_c0 <5> '
+has intestine "$out" '^  -sph_delta <0.1> '
 has intestine "$out" '^  -sph_nu <1e-05> '
 has intestine "$out" '^  -gravity <9.81> '
-has intestine "$out" '^  -dt <3e-05> '
+has intestine "$out" '^  -dt <0> '
 has intestine "$out" '^  -bond_style <nonlinear> '
 has intestine "$out" '^  -sph_kernel_correction <false> '
 has intestine "$out" '^  -sph_wall_extrapolation <adami> '

@@ -28,11 +28,19 @@ def load(outdir):
     path = os.path.join(outdir, "intestine.csv")
     with open(path) as f:
         lines = [l for l in f if not l.startswith("#")]
-    for l in lines:
-        assert "nan" not in l.lower(), f"NaN in {path}: {l}"
+    if len(lines) < 2:
+        fail(f"{path}: no rows")
     names = lines[0].strip().split(",")
-    data = np.array([[float(x) for x in l.strip().split(",")] for l in lines[1:]])
-    return names, data
+    rows = []
+    for n, l in enumerate(lines[1:], start=2):
+        v = l.strip().split(",")
+        if len(v) != len(names):
+            fail(f"{path}: row {n} has {len(v)} values, the header {len(names)}")
+        r = [float(x) for x in v]
+        if not np.all(np.isfinite(r)):
+            fail(f"{path}: row {n} has a non-finite value: {l.strip()}")
+        rows.append(r)
+    return names, np.array(rows)
 
 
 def col(names, data, n):
@@ -79,7 +87,9 @@ def mode_run(args):
     names, data = load(args.outdir)
     t = col(names, data, "t")
     tend = [l for l in open(args.opts) if l.startswith("-t_end")]
-    if tend and t[-1] < float(tend[0].split()[1]) * (1 - 1e-6) - 1e-4:
+    if not tend:
+        fail(f"{args.opts} has no -t_end line to check the run's end against")
+    if t[-1] < float(tend[0].split()[1]) * (1 - 1e-6) - 1e-4:
         fail(f"run stopped at t = {t[-1]}")
     fluid, over = col(names, data, "fluid"), col(names, data, "overflow")
     n0 = fluid[0] + over[0]
@@ -91,6 +101,25 @@ def mode_run(args):
     if over[-1] < args.min_overflow:
         fail(f"overflow {int(over[-1])} < {args.min_overflow}")
     print(f"  particles: {int(n0)} fluid, conserved in all {len(t)} rows; overflow at the end {int(over[-1])}")
+    # weakly compressible and watertight in every row
+    rd, ma, lk = col(names, data, "rho_dev"), col(names, data, "mach"), col(names, data, "leaked")
+    print(f"  max |rho/rho0 - 1| {rd.max():.4g} (t = {t[rd.argmax()]:.4g} s), max Mach {ma.max():.4g} "
+          f"(t = {t[ma.argmax()]:.4g} s), liquid below the membrane's top layer: max {int(lk.max())}")
+    if rd.max() > args.max_rho_dev:
+        fail(f"density deviation {rd.max():.4g} > {args.max_rho_dev} at t = {t[rd.argmax()]:.4g} s")
+    if ma.max() > args.max_mach:
+        fail(f"Mach {ma.max():.4g} > {args.max_mach} at t = {t[ma.argmax()]:.4g} s")
+    if lk.max() > args.max_leaked:
+        fail(f"{int(lk.max())} liquid particles below the membrane's top layer at t = {t[lk.argmax()]:.4g} s")
+    summ = os.path.join(args.outdir, "intestine-summary.csv")
+    if not os.path.isfile(summ):
+        fail(f"{summ} missing")
+    kv = dict(l.strip().split(",", 1) for l in open(summ).readlines()[1:])
+    for k in ("u_F", "u_F_initial", "V_w", "Re", "Fr", "rho_dev_max", "mach_max", "leaked_max"):
+        if k not in kv or not np.isfinite(float(kv[k])):
+            fail(f"{summ}: {k} missing or not finite ({kv.get(k)!r})")
+    if abs(float(kv["rho_dev_max"]) - rd.max()) > 1e-6 or int(float(kv["leaked_max"])) != int(lk.max()):
+        fail(f"{summ}: rho_dev_max / leaked_max disagree with intestine.csv")
     n = sign_checks(names, data, args.min_move)
     print(f"  {n} sign checks passed")
     # the front: from the start of pocket 0's first +1 to its end
@@ -110,7 +139,7 @@ def mode_run(args):
             fail("CSV layout differs from " + args.compare)
         err = np.max(np.abs(data - data2) / np.maximum(1e-30, np.abs(data2) + 1e-12))
         print(f"  largest relative difference to {args.compare}: {err:.3e}")
-        if err > 1e-12:
+        if not err <= 1e-12:  # a NaN fails too
             fail("CSV differs from the 1-rank run")
     print("PASS")
 
@@ -135,13 +164,13 @@ def mode_schedule(args):
         f.write("# malformed\n1 0 -1\n1 2 0\n")
     rc, out = run(args, os.path.join(args.outdir, "bad"), ["-peristalsis_schedule", bad, "-t_end", "0.01"])
     print(out[-800:])
-    if rc == 0 or f"{bad}:3" not in out:
+    if rc != 1 or f"{bad}:3" not in out:
         fail(f"malformed schedule: expected an error naming {bad}:3")
     short = os.path.join(args.outdir, "short.txt")
     with open(short, "w") as f:
         f.write("1 0 -1\n0 1\n")
     rc, out = run(args, os.path.join(args.outdir, "short"), ["-peristalsis_schedule", short, "-t_end", "0.01"])
-    if rc == 0 or f"{short}:2" not in out:
+    if rc != 1 or f"{short}:2" not in out:
         fail(f"short row: expected an error naming {short}:2")
     print("PASS")
 
@@ -176,5 +205,8 @@ ap.add_argument("--extra", default="", help="more dmhs options (one string)")
 ap.add_argument("--min-overflow", type=int, default=0)
 ap.add_argument("--min-move", type=float, default=5e-4)
 ap.add_argument("--min-front", type=float, default=5e-4)
+ap.add_argument("--max-rho-dev", type=float, default=0.03, help="max |rho/rho0 - 1| in every row")
+ap.add_argument("--max-mach", type=float, default=0.1, help="max |v|/c0 in every row")
+ap.add_argument("--max-leaked", type=int, default=0, help="liquid particles below the membrane's top layer")
 args = ap.parse_args()
 {"run": mode_run, "schedule": mode_schedule, "restart": mode_restart}[args.mode](args)
