@@ -24,7 +24,7 @@ SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, const double *rest
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double xij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    const double r2 = xij[0] * xij[0] + xij[1] * xij[1];
+    const double r2 = PetscMax(xij[0] * xij[0] + xij[1] * xij[1], SPH_R2_FLOOR * h2);
     if (r2 >= h2) { /* in the list's skin only */
       pair[k][0] = pair[k][1] = 0.0;
       continue;

@@ -49,7 +49,7 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
         continue; /* beyond h */
       F = A->pair[k][0];
     } else {
-      const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
+      const double r2 = PetscMax(rij[0] * rij[0] + rij[1] * rij[1], SPH_R2_FLOOR * h2);
       if (r2 >= h2)
         continue; /* listed within the skin, not (yet) interacting */
       r = sqrt(r2);

@@ -33,6 +33,12 @@ SPH_INLINE double sph_kernel_norm(sph_kernel_kind kind, int dim, double h) {
   return 0.0;
 }
 
+/* Coincident particles (a pair that clumped at a free surface, r = 0): dW/dr / r
+ * is finite there for every kernel but computes as 0/0. The pair loops take
+ * r^2 no smaller than this fraction of h^2, far below any real separation, so
+ * every other pair is untouched bit for bit. */
+#define SPH_R2_FLOOR 1e-18
+
 /* W(r) and dW/dr for r < h (r >= h gives 0). Takes 1/h: the hot loops then
  * multiply instead of divide. */
 SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, double inv_h, double r,

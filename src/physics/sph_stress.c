@@ -27,7 +27,7 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
     const double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double r2 = rij[0] * rij[0] + rij[1] * rij[1];
+    const double r2 = PetscMax(rij[0] * rij[0] + rij[1] * rij[1], SPH_R2_FLOOR * h2);
     if (r2 >= h2)
       continue;
     const double r = sqrt(r2);
