@@ -59,12 +59,13 @@ CASES = {
     "colon": {
         "opts": ["-options_file", "input/intestine-quick.opts"],
         "csv": "intestine.csv",
-        "reference": ["-dt", "1e-5"],
+        "reference": ["-dt", "4e-6"],
         "settings": [
-            ("fixed dt 3e-5 s (the quick input)", ["-dt", "3e-5"]),
-            ("automatic dt", ["-dt", "0"]),
-            ("automatic dt, automatic sub-steps", ["-dt", "0", "-solid_substeps", "0"]),
+            ("automatic dt (the quick input)", ["-dt", "0"]),
             ("automatic dt, safety 0.5", ["-dt", "0", "-dt_safety", "0.5"]),
+            ("automatic dt, automatic sub-steps", ["-dt", "0", "-solid_substeps", "0"]),
+            ("automatic dt, c0 2.5 m/s", ["-dt", "0", "-sph_c0", "2.5"]),
+            ("fixed dt 1e-5 s", ["-dt", "1e-5"]),
         ],
     },
 }

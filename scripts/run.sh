@@ -36,6 +36,10 @@ if [ -f "$outdir/error.csv" ]; then
 fi
 # the vein: geometry, fields at the peak flow, the sinus liquid per cycle, the
 # measurement point / inlet / gap history; with clots, their growth
+# the colon: x_F with u_F, alpha, lifts, N/N0 per pocket, the liquid's bounds
+if [ -f "$outdir/intestine.csv" ]; then
+  /usr/bin/python3 "$repo/scripts/post/plot_intestine.py" "$outdir"
+fi
 if [ -f "$outdir/vein.csv" ]; then
   for p in geometry fields sinus probe inlet; do
     /usr/bin/python3 "$repo/scripts/post/plot_vein_$p.py" "$outdir"

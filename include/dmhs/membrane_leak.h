@@ -10,11 +10,12 @@
 typedef struct {
   PetscInt64 g0;      /* gid of column 0, layer 0 */
   PetscInt n_columns; /* columns along x */
-  PetscInt layers;    /* particles per column */
-  PetscInt layer;     /* the layer the liquid must stay above (0 = top) */
+  PetscInt layers;    /* particles per column, 0 = the top (liquid side) */
 } membrane_layout;
 
-/* Fluid particles (over all ranks) below the layer's polyline. Collective. */
-PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_below);
+/* Fluid particles over all ranks lodged in the membrane (below its top
+ * layer's polyline, above its bottom layer's) and through it (below the
+ * bottom layer's). Collective. */
+PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_inside, PetscInt64 *n_through);
 
 #endif

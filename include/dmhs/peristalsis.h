@@ -1,4 +1,4 @@
-/* Module peristalsis (SPEC 4.2): the peristaltic wave of the intestine scene
+/* Module peristalsis: the peristaltic wave of the intestine scene
  * as a schedule of up (+1), down (-1) or no (0) force on each pocket's
  * membrane segment per sub-period t_w, plus the support that holds the
  * membrane in its haustral shape (doc/theory.md, "Peristalsis and tracking"). */
@@ -22,7 +22,7 @@ PetscInt peristalsis_subperiod(const module *m, double t);
 double peristalsis_amplitude(const module *m, double t, PetscInt k);
 /* Resolved t_w [s], period T_w [s] (rows x t_w), H, rows of the schedule. */
 PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscInt *H, PetscInt *rows, double *delay);
-/* The generated (SPEC) schedule: pocket k of n_pockets in sub-period r of a
+/* The generated (published) schedule: pocket k of n_pockets in sub-period r of a
  * period of 2N+5 sub-periods: -1 if r = 2k-1, +1 if r in 2k+1 .. 2k+H (mod 2N+5). */
 int peristalsis_spec_value(PetscInt n_pockets, PetscInt H, PetscInt r, PetscInt k);
 

@@ -1,4 +1,4 @@
-/* Tracked fluid sets of the intestine scene (SPEC 4.2): counts per pocket,
+/* Tracked fluid sets of the intestine scene: counts per pocket,
  * the front position x_F (mean x of the set) and least-squares slopes.
  * Sums over ranks are exact (positions in fixed point, integers reduced), so
  * the results do not depend on the rank count. */

@@ -178,7 +178,8 @@ def main():
     x.axhline(10, color="r", ls=":", lw=0.8)
     x.set_xlabel("t [s]")
     x.set_ylabel("[%]")
-    x.set_title(f"Weakly compressible bounds; liquid below the membrane: max {int(d['leaked'].max())}")
+    x.set_title(f"Weakly compressible bounds; liquid in / through the membrane: "
+                f"max {int(d['in_membrane'].max())} / {int(d['through'].max())}")
     x.legend(fontsize=8)
     # numbers
     x = ax[1, 2]

@@ -18,30 +18,35 @@ static double polyline_height(const double *xs, const double *ys, PetscInt n, do
   return ys[lo] + w * (ys[hi] - ys[lo]);
 }
 
-PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_below) {
+PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_inside, PetscInt64 *n_through) {
   const particles *ps = &s->ps;
-  const PetscInt n = m->n_columns;
-  double *line; /* x of every column, then y */
-  PetscInt64 below = 0;
+  const PetscInt n = m->n_columns, bottom = m->layers - 1;
+  double *line; /* x and y of every column's top particle, then of its bottom one */
+  PetscInt64 count[2] = {0, 0};
   PetscFunctionBeginUser;
-  PetscCheck(m->layer >= 0 && m->layer < m->layers, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "membrane_leak_count: layer %" PetscInt_FMT " of %" PetscInt_FMT, m->layer, m->layers);
-  PetscCall(PetscCalloc1(2 * n, &line));
+  PetscCheck(m->layers >= 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "membrane_leak_count: %" PetscInt_FMT " layers",
+             m->layers);
+  PetscCall(PetscCalloc1(4 * n, &line));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     const PetscInt64 rel = ps->gid[i] - m->g0;
-    if (rel < 0 || rel >= (PetscInt64)n * m->layers || rel % m->layers != m->layer) continue;
-    const PetscInt col = (PetscInt)(rel / m->layers);
-    line[col] = ps->x[i][0];
-    line[n + col] = ps->x[i][1];
+    if (rel < 0 || rel >= (PetscInt64)n * m->layers) continue;
+    const PetscInt col = (PetscInt)(rel / m->layers), layer = (PetscInt)(rel % m->layers);
+    if (layer != 0 && layer != bottom) continue;
+    double *at = line + (layer == 0 ? 0 : 2 * n);
+    at[col] = ps->x[i][0];
+    at[n + col] = ps->x[i][1];
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, line, (PetscMPIInt)(2 * n), MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, line, (PetscMPIInt)(4 * n), MPI_DOUBLE, MPI_SUM, s->comm));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_FLUID) continue;
-    const double y = polyline_height(line, line + n, n, ps->x[i][0]);
-    if (!isnan(y) && ps->x[i][1] < y) below++;
+    const double yt = polyline_height(line, line + n, n, ps->x[i][0]);
+    const double yb = polyline_height(line + 2 * n, line + 3 * n, n, ps->x[i][0]);
+    if (!isnan(yb) && ps->x[i][1] < yb) count[1]++;
+    else if (!isnan(yt) && ps->x[i][1] < yt) count[0]++;
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &below, 1, MPIU_INT64, MPI_SUM, s->comm));
-  *n_below = below;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, count, 2, MPIU_INT64, MPI_SUM, s->comm));
+  *n_inside = count[0];
+  *n_through = count[1];
   PetscCall(PetscFree(line));
   PetscFunctionReturn(0);
 }

@@ -1,4 +1,4 @@
-/* Module peristalsis (SPEC 4.2): the peristaltic wave on the intestine's
+/* Module peristalsis: the peristaltic wave on the intestine's
  * membrane segments, and the support that holds the membrane in shape.
  *
  * Time after -peristalsis_delay t_d is cut into sub-periods of t_w; sub-period
@@ -259,7 +259,7 @@ static PetscErrorCode peristalsis_view(module *self, sim *s, PetscViewer v) {
                                    "peristalsis: %" PetscInt_FMT " pockets of b = %g m, t_w = %g s, %s schedule of %" PetscInt_FMT
                                    " rows (T_w = %g s, H = %" PetscInt_FMT "), waves %" PetscInt_FMT " (0 = until t_end), delay %g s\n"
                                    "  force %g N per particle on %" PetscInt_FMT " segment particles, support %g N/m, damping %g 1/s\n",
-                                   d->n_pockets, d->b, d->t_w, d->file[0] ? d->file : "generated (SPEC 4.2)", d->rows,
+                                   d->n_pockets, d->b, d->t_w, d->file[0] ? d->file : "generated", d->rows,
                                    d->rows * d->t_w, d->H, d->waves, d->delay, d->force, d->n_seg, d->support, d->damping));
   PetscFunctionReturn(0);
 }

@@ -47,3 +47,14 @@ add_test(NAME validation_intestine_plot
          COMMAND sh -c "rm -f ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine.py ${DMHS_INTESTINE_PLOT_DIR} && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine-pockets.csv")
 set_tests_properties(validation_intestine_plot PROPERTIES LABELS validation TIMEOUT 60
                      FIXTURES_REQUIRED intestine_quick)
+# The PET case in miniature (input/intestine-pet-quick.opts, ~3 min, label
+# full): the study's wave speed and lift over one whole wave; alpha after one
+# period, u_P and u_S measured; conservation, the schedule's signs, the bounds
+# as in the quick run; at most 1 % of the liquid (13 particles) lodged in the
+# membrane, none through it. Fails today on the density bound: 15 % in one
+# output row (t = 1.60 s; doc/validation.md).
+add_test(NAME validation_intestine_pet_quick
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/intestine.py --exe ${DMHS_EXE}
+                 --opts ${PROJECT_SOURCE_DIR}/input/intestine-pet-quick.opts --outdir ${DMHS_INTESTINE_OUT}/pet-quick
+                 --need-alpha --min-move 2e-3 --min-front 2e-3 --max-in-membrane 13)
+set_tests_properties(validation_intestine_pet_quick PROPERTIES LABELS "validation;full" TIMEOUT 1200)
