@@ -13,7 +13,7 @@ set_tests_properties(io_signal_term PROPERTIES LABELS "io;validation" TIMEOUT 18
 # the parallel row layout on 3 ranks with uneven and empty row counts (h5io_mpi.sh)
 add_executable(h5io_mpi ${DMHS_IO_DIR}/h5io_mpi.c)
 target_include_directories(h5io_mpi PRIVATE ${PROJECT_SOURCE_DIR}/src)
-target_compile_options(h5io_mpi PRIVATE -Wall -Wextra -Werror)
+target_compile_options(h5io_mpi PRIVATE ${DMHS_WARNINGS})
 target_link_libraries(h5io_mpi PRIVATE dmhs_core)
 add_test(NAME io_h5io_mpi COMMAND bash ${DMHS_IO_DIR}/h5io_mpi.sh $<TARGET_FILE:h5io_mpi> ${DMHS_PYTHON}
   ${DMHS_IO_OUT}/h5io_mpi ${DMHS_MPIRUN})
