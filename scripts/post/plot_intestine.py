@@ -94,7 +94,8 @@ def main():
         die("intestine.csv: the wave never started (sub < 0 in every row)")
     t0, Tw = t[started[0]], s["T_w"]
     # rows closest to the end of every completed wave
-    n_done = int(math.floor((t[-1] - t0) / Tw + 1e-9))
+    # t0 is the first output row of the wave, up to an output interval late
+    n_done = int(math.floor((t[-1] - t0) / Tw + 1e-3))
     wave_rows = [int(np.argmin(np.abs(t - (t0 + n * Tw)))) for n in range(1, n_done + 1)]
     sets = [("white", pocket_counts(d, names, "white", n_pockets))]
     red = pocket_counts(d, names, "red", n_pockets)
@@ -168,7 +169,7 @@ def main():
     x.set_xticklabels([str(k) for k in range(n_pockets)] + ["out"])
     x.set_xlabel("pocket")
     x.set_ylabel("N/N0 [1]")
-    x.set_title("Tracked liquid per pocket (Fig. 3.4, simulation)")
+    x.set_title("Tracked liquid per pocket (Fig. 3.4, simulation)", fontsize=10)
     x.legend(fontsize=8)
     # credibility
     x = ax[1, 1]
@@ -178,8 +179,8 @@ def main():
     x.axhline(10, color="r", ls=":", lw=0.8)
     x.set_xlabel("t [s]")
     x.set_ylabel("[%]")
-    x.set_title(f"Weakly compressible bounds; liquid in / through the membrane: "
-                f"max {int(d['in_membrane'].max())} / {int(d['through'].max())}")
+    x.set_title(f"Liquid bounds; in / through the membrane: max {int(d['in_membrane'].max())} / "
+                f"{int(d['through'].max())}", fontsize=10)
     x.legend(fontsize=8)
     # numbers
     x = ax[1, 2]
