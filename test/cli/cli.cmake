@@ -102,6 +102,32 @@ dmhs_cli_fail(cli_pulsatile_without_drive "-body_force_period 0.206 s the drive 
 add_test(NAME cli_vein_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_study.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
   ${DMHS_CLI_OUT}/vein-study)
 set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
+# scripts/slurm/colon-study.sbatch in its dry-run mode: task id -> (L, nu, V_w) and t_w, the grid's corners,
+# ids out of range refused, a completed run skipped, a checkpointed one continued (test/cli/colon_study.sh)
+add_test(NAME cli_colon_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/colon_study.sh ${PROJECT_SOURCE_DIR}
+  ${DMHS_CLI_OUT}/colon-study)
+set_tests_properties(cli_colon_study_script PROPERTIES LABELS cli TIMEOUT 60)
+# the colon study's inputs parse (read from the repository root, as they read input/intestine.opts) and
+# -help shows their overrides
+foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081>"
+             "L111|-output_dir <output/intestine-L111>.*-intestine_level <0.0111>"
+             "L157|-output_dir <output/intestine-L157>.*-intestine_level <0.0157>"
+             "new-wave|-output_dir <output/intestine-new-wave>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <5>"
+             "old-wave-red|-output_dir <output/intestine-old-wave-red>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <2>")
+  string(FIND "${case}" "|" bar)
+  string(SUBSTRING "${case}" 0 ${bar} name)
+  math(EXPR bar "${bar} + 1")
+  string(SUBSTRING "${case}" ${bar} -1 regex)
+  add_test(NAME cli_colon_study_input_${name} COMMAND ${DMHS_EXPECT_OUTPUT} "${regex}"
+    -- ${DMHS_EXE} -options_file input/intestine-${name}.opts -help)
+  set_tests_properties(cli_colon_study_input_${name} PROPERTIES LABELS cli TIMEOUT 60
+                       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+endforeach()
+# scripts/post/plot_intestine_study.py on synthetic summaries: Re, Re_P, a run with alpha_T n/a skipped,
+# a malformed or missing summary refused (test/cli/colon_study_plot.py)
+add_test(NAME cli_colon_study_plot COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/colon_study_plot.py
+  ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_study.py ${DMHS_CLI_OUT}/colon-study-plot)
+set_tests_properties(cli_colon_study_plot PROPERTIES LABELS cli TIMEOUT 60)
 # the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
 add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* ETA +0.0 s" --reject "ETA +-" --
   ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
