@@ -138,14 +138,15 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscCall(bond_set_default(s, 1e-4, c->dx, 1.8 * c->dx));
   PetscCall(angle_set_default(s, 8e-5, 90.0));
   PetscCall(sim_enable_module(s, "repulsion", &c->rep));
-  /* K = 4000 J/m^2 x dx^2 (1e-3 J at dx = 5e-4 m, 2.5e-4 J at the study's
+  /* K = 8000 J/m^2 x dx^2 (2e-3 J at dx = 5e-4 m, 5e-4 J at the study's
    * 2.5e-4 m), not the published 1e-10 J (doc/validation.md, "Intestine"):
    * where the wave stretches the membrane to ~1.9 r0, a liquid particle in a
    * gap between two membrane particles is 0.95 r* from both, where the SPH
    * pressure force vanishes (dW/dr -> 0) and 1e-10 J pushes ~1e-7 N/m against
-   * the liquid's p dx ~ 0.05 N/m: the liquid went through. The repulsion's
-   * limit, 0.05 dx [s/m] here, stays near the sound speed's at c0 = 5 m/s. */
-  PetscCall(repulsion_set_default(c->rep, 4000.0 * c->dx * c->dx, c->dx, 4, 2));
+   * the liquid's p dx ~ 0.05 N/m: the liquid went through (half this K still
+   * let it through near a clamped end). The repulsion's limit, 0.035 dx
+   * [s/m], binds dt: 1.8x below the sound speed's at c0 = 5 m/s. */
+  PetscCall(repulsion_set_default(c->rep, 8000.0 * c->dx * c->dx, c->dx, 4, 2));
   PetscCall(sim_enable_module(s, "peristalsis", &c->peri));
   PetscCall(peristalsis_set_geometry(c->peri, c->n_pockets, c->b, 0.0));
   PetscFunctionReturn(0);
@@ -174,9 +175,12 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
   s->dom.lo[1] = y_bottom - 0.02 - 2 * dx; /* room for the membrane pushed down */
   s->dom.hi[1] = y_top + 0.02;
   s->dom.periodic[0] = s->dom.periodic[1] = PETSC_FALSE;
-  /* parked as it passes the centre of the weir's outer column: a film that clung to
-   * the outer face below the crest crept under the weir and the membrane */
-  c->x_park = c->x_end + (wl - 0.5) * dx;
+  /* parked as it passes the centre of the weir's inner column, i.e. once it is
+   * over the weir (doc/validation.md, "Intestine"): a film that clung to the
+   * outer face crept under the weir and the membrane, and a lone particle
+   * left on the crest, its pressure extrapolated to the wall from itself
+   * alone, rattled up to Mach 0.23 */
+  c->x_park = c->x_end + 0.5 * dx;
   c->lot_sp = 2.2 * s->sph.h;
   c->lot_x0 = c->x_park + 2 * c->lot_sp;
   c->lot_y0 = s->dom.lo[1] + c->lot_sp;
