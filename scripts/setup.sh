@@ -7,9 +7,10 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${DMHS_BUILD_DIR:-$repo/build}"
 
 # Debian packages: compilers, MPI, PETSc 3.18, parallel HDF5, METIS, GSL, cmocka,
-# and Debian's own python3 with numpy/h5py/matplotlib for scripts/post and tests.
+# and Debian's own python3 with numpy/h5py/matplotlib for scripts/post and tests;
+# clang-format for the style check (ctest format_check).
 packages=(build-essential cmake pkg-config openmpi-bin libopenmpi-dev petsc-dev
-          libhdf5-openmpi-dev libmetis-dev libgsl-dev libcmocka-dev
+          libhdf5-openmpi-dev libmetis-dev libgsl-dev libcmocka-dev clang-format
           python3 python3-numpy python3-h5py python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do

@@ -12,8 +12,9 @@ static char first_error[512]; /* for run.json (io_record_error) */
 
 /* A user sees the message that names the option, file or particle at fault,
  * and where it was raised; -dmhs_traceback gives PETSc's full traceback. */
-static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *func, const char *file,
-                                         PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx) {
+static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *func,
+                                         const char *file, PetscErrorCode n, PetscErrorType p,
+                                         const char *mess, void *ctx) {
   (void)comm;
   (void)ctx;
   if (p == PETSC_ERROR_INITIAL) {
@@ -21,9 +22,11 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
     MPI_Initialized(&mpi_up);
     if (mpi_up)
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, mess ? mess : "(no message)");
+    fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank,
+            mess ? mess : "(no message)");
     fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
-    if (!first_error[0]) snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
+    if (!first_error[0])
+      snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
     fflush(stderr);
   }
   return n;
@@ -68,12 +71,14 @@ int main(int argc, char **argv) {
   if (help_only)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
   ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
-  if (!ierr && !help_only) ierr = sim_run(s);
+  if (!ierr && !help_only)
+    ierr = sim_run(s);
   if (ierr) {
     io_record_error(s, first_error); /* run.json: status "error" (best effort) */
     /* one rank alone can fail (a particle's NaN): only an abort frees the others */
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
-    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1);
+    if (size > 1)
+      MPI_Abort(PETSC_COMM_WORLD, 1);
     PetscCall(PetscFinalize());
     return 1;
   }

@@ -40,12 +40,14 @@ PetscErrorCode bond_get_params(struct sim *s, bond_style *style, const bond_para
 /* Shared by the two bond modules: reads -bond_k (help text per style) and
  * -bond_r0 inside their options block; checks them per type and finds the
  * smallest solid mass in setup (k_unit names K's unit in messages); frees. */
-PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p, const char *k_help);
+PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p,
+                                 const char *k_help);
 PetscErrorCode bond_setup_k_r0(struct sim *s, bond_params *p, const char *k_unit);
 PetscErrorCode bond_destroy(module *self);
 /* Shared by the solid modules' setup: checks per-type coefficients given for
  * n_given types cover n_types (one value = every type), names the option. */
-PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given, PetscInt n_types);
+PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given,
+                                      PetscInt n_types);
 /* Makes sure the topology has been resolved for the current positions (the
  * pre-flight report runs before the first neighbour build). */
 PetscErrorCode bond_ensure_resolved(struct sim *s);

@@ -9,12 +9,12 @@ typedef struct cells {
   double lo[DMHS_DIM]; /* lower corner of the covered region (box minus ghost width) */
   double size;         /* cell edge >= cutoff */
   PetscInt n[DMHS_DIM];
-  PetscInt *start;  /* n cells + 1 offsets into order */
-  PetscInt *order;  /* particle indices sorted by cell */
+  PetscInt *start; /* n cells + 1 offsets into order */
+  PetscInt *order; /* particle indices sorted by cell */
   PetscInt *cell_of;
   PetscInt n_alloc_cells, n_alloc_particles;
-  double (*xs)[DMHS_DIM];  /* positions in cell order (scratch) */
-  unsigned char *flag;     /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */
+  double (*xs)[DMHS_DIM]; /* positions in cell order (scratch) */
+  unsigned char *flag;    /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */
   PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;

@@ -30,8 +30,10 @@ struct sim;
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;
 
-PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v, PetscInt n);
-PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n);
+PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v,
+                                    PetscInt n);
+PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v,
+                                   PetscInt n);
 /* n must match what was stored; checkpoint_get_length tells it (-1 = absent). */
 PetscErrorCode checkpoint_get_length(checkpoint_io *io, const char *name, PetscInt *n);
 PetscErrorCode checkpoint_get_reals(checkpoint_io *io, const char *name, double *v, PetscInt n);

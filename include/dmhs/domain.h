@@ -9,7 +9,9 @@ typedef struct domain {
   PetscBool periodic[DMHS_DIM];
 } domain;
 
-static inline double domain_length(const domain *d, int k) { return d->hi[k] - d->lo[k]; }
+static inline double domain_length(const domain *d, int k) {
+  return d->hi[k] - d->lo[k];
+}
 /* Replace a separation vector by its nearest periodic image. */
 void domain_min_image(const domain *d, double dx[DMHS_DIM]);
 /* Map a position into [lo, hi) along periodic directions. */

@@ -30,7 +30,8 @@ typedef struct errors {
 
 /* Reads -error_report_times (a list of times [s]). */
 PetscErrorCode errors_set_from_options(errors *e, struct sim *s);
-PetscErrorCode errors_setup(errors *e, struct sim *s, errors_exact_fn exact, const void *ctx, double v_ref);
+PetscErrorCode errors_setup(errors *e, struct sim *s, errors_exact_fn exact, const void *ctx,
+                            double v_ref);
 /* Per step: appends a row at output times, records and writes profiles at report times. */
 PetscErrorCode errors_on_step(errors *e, struct sim *s);
 /* Prints the errors at the report times reached and the wall-clock time. */

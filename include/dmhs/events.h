@@ -11,7 +11,7 @@ typedef struct dmhs_events {
   PetscLogEvent partition, halo_exchange; /* mpi: METIS; the MPI part of halo build/forward */
   PetscLogEvent checkpoint;
   PetscLogEvent topology, bond, angle, repulsion, solid_load; /* solids (issue 3) */
-  PetscLogEvent peristalsis; /* intestine */
+  PetscLogEvent peristalsis;                                  /* intestine */
   PetscLogEvent substeps, timestep; /* solid sub-steps; the limits before every step */
 } dmhs_events;
 

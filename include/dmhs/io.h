@@ -20,16 +20,16 @@ typedef struct io_state {
   PetscBool restart_allow_change;        /* -restart_allow_change: physics options may differ */
   char *restart_changes;                 /* what differed from the checkpoint's options, or NULL */
   /* state */
-  PetscBool restarted;   /* the state was read from restart_file */
-  double restart_t;      /* t when this session's step loop started [s] */
-  PetscInt snapshot_index;    /* number of the next snapshot file */
-  double next_checkpoint_t;   /* [s] */
+  PetscBool restarted;           /* the state was read from restart_file */
+  double restart_t;              /* t when this session's step loop started [s] */
+  PetscInt snapshot_index;       /* number of the next snapshot file */
+  double next_checkpoint_t;      /* [s] */
   PetscInt last_checkpoint_step; /* -1 = none written by this session */
-  int stop_signal;            /* signal that stopped the run, 0 = none */
-  struct xdmf *xdmf;          /* rank 0: the snapshots indexed so far */
-  char *options;              /* resolved options (PetscOptionsGetAll) */
-  char start_time[32];        /* ISO 8601, UTC */
-  char previous_status[32];   /* status in the run.json this run replaced ("" = none) */
+  int stop_signal;               /* signal that stopped the run, 0 = none */
+  struct xdmf *xdmf;             /* rank 0: the snapshots indexed so far */
+  char *options;                 /* resolved options (PetscOptionsGetAll) */
+  char start_time[32];           /* ISO 8601, UTC */
+  char previous_status[32];      /* status in the run.json this run replaced ("" = none) */
   PetscBool run_json_started;
 } io_state;
 

@@ -16,6 +16,7 @@ typedef struct {
 /* Fluid particles over all ranks lodged in the membrane (below its top
  * layer's polyline, above its bottom layer's) and through it (below the
  * bottom layer's). Collective. */
-PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_inside, PetscInt64 *n_through);
+PetscErrorCode membrane_leak_count(sim *s, const membrane_layout *m, PetscInt64 *n_inside,
+                                   PetscInt64 *n_through);
 
 #endif

@@ -12,8 +12,9 @@ typedef enum {
   PTYPE_FLUID = 0, /* SPH liquid, integrated */
   PTYPE_WALL = 1,  /* SPH wall: prescribed velocity, boundary values extrapolated (sph_wall.c) */
   PTYPE_SOLID = 2, /* bonded particle that is also an SPH particle, integrated */
-  PTYPE_CLOT = 3,  /* liquid particle joined to a clot (agglomeration.c): SPH, integrated, moved by its
-                    * bonds, no liquid body force by default, no liquid-solid repulsion with the liquid */
+  PTYPE_CLOT =
+      3, /* liquid particle joined to a clot (agglomeration.c): SPH, integrated, moved by its
+          * bonds, no liquid body force by default, no liquid-solid repulsion with the liquid */
   PTYPE_COUNT
 } particle_type;
 
@@ -24,27 +25,27 @@ typedef struct particles {
   PetscInt64 *gid;   /* global id, unique across ranks, stable for the whole run */
   PetscInt *type;    /* particle_type */
   PetscInt *tag;     /* user tag (tracked sets); 0 = none */
-  double (*x)[DMHS_DIM];      /* position [m] */
-  double (*v)[DMHS_DIM];      /* velocity [m/s]; half-step value between the two kicks */
-  double (*v_est)[DMHS_DIM];  /* predicted velocity at the force evaluation [m/s] */
-  double (*v_visc)[DMHS_DIM]; /* velocity seen by the viscous term (walls: extrapolated) [m/s] */
-  double (*a)[DMHS_DIM];      /* acceleration [m/s^2] */
-  double (*x0)[DMHS_DIM];     /* initial position, for displacement diagnostics [m] */
+  double (*x)[DMHS_DIM];       /* position [m] */
+  double (*v)[DMHS_DIM];       /* velocity [m/s]; half-step value between the two kicks */
+  double (*v_est)[DMHS_DIM];   /* predicted velocity at the force evaluation [m/s] */
+  double (*v_visc)[DMHS_DIM];  /* velocity seen by the viscous term (walls: extrapolated) [m/s] */
+  double (*a)[DMHS_DIM];       /* acceleration [m/s^2] */
+  double (*x0)[DMHS_DIM];      /* initial position, for displacement diagnostics [m] */
   double (*x_build)[DMHS_DIM]; /* position at the last neighbour-list build [m] */
-  double *mass;               /* [kg] per unit depth */
-  double *rho;                /* density [kg/m^3] */
-  double *drho;               /* density rate [kg/m^3/s] */
-  double *p;                  /* pressure [Pa] */
+  double *mass;                /* [kg] per unit depth */
+  double *rho;                 /* density [kg/m^3] */
+  double *drho;                /* density rate [kg/m^3/s] */
+  double *p;                   /* pressure [Pa] */
   /* optional rows (NULL unless enabled, fields.c) */
-  PetscInt *body;             /* solid body id, 0 = none (repulsion between bodies) */
-  double *shear_rate;         /* sqrt(2 D:D) from the SPH velocity gradient [1/s] */
+  PetscInt *body;     /* solid body id, 0 = none (repulsion between bodies) */
+  double *shear_rate; /* sqrt(2 D:D) from the SPH velocity gradient [1/s] */
   double *stress_xx, *stress_xy, *stress_yy; /* virial stress [Pa] (src/diag/stress.c) */
-  double *stress_mag;         /* its Frobenius norm [Pa] */
-  double *pressure_force;     /* |SPH pressure force| [N/m] */
-  double *speed;              /* |v| [m/s] */
-  double *displacement;       /* |x - x0| (minimum image) [m] */
+  double *stress_mag;                        /* its Frobenius norm [Pa] */
+  double *pressure_force;                    /* |SPH pressure force| [N/m] */
+  double *speed;                             /* |v| [m/s] */
+  double *displacement;                      /* |x - x0| (minimum image) [m] */
   double (*to_surface)[DMHS_DIM]; /* wall: vector to the nearest wall-surface point [m] */
-  PetscInt *side;             /* vein: side of the nearest leaflet, -1/0/+1 */
+  PetscInt *side;                 /* vein: side of the nearest leaflet, -1/0/+1 */
   double (*a_hold)[DMHS_DIM]; /* -solid_substeps: the solid's acceleration from everything but its
                                  own bonds and angles, held over the sub-steps [m/s^2] */
 } particles;
@@ -55,8 +56,8 @@ PetscErrorCode particles_destroy(particles *ps);
 PetscErrorCode particles_reserve(particles *ps, PetscInt n);
 /* Append one owned particle (ghosts must be empty); returns its local index. */
 PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type type,
-                                   const double x[DMHS_DIM], const double v[DMHS_DIM],
-                                   double mass, double rho, PetscInt *index);
+                                   const double x[DMHS_DIM], const double v[DMHS_DIM], double mass,
+                                   double rho, PetscInt *index);
 /* Copy every field row flagged by `flags` from row src to row dst. */
 void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flags);
 /* Number of owned particles of a type on this rank. */
@@ -70,8 +71,8 @@ int particles_select_fields(unsigned flags, const field_desc **out, int max);
 /* Bytes of one packed particle. */
 size_t particles_packed_bytes(const field_desc *const *f, int nf);
 /* Packs rows[0..n) of the fields f; with shift, shift[e] is added to field x of entry e. */
-void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows, PetscInt n,
-                    const double (*shift)[DMHS_DIM], char *buf);
+void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows,
+                    PetscInt n, const double (*shift)[DMHS_DIM], char *buf);
 /* Unpacks n particles into rows [first, first + n) (capacity must suffice). */
 void particles_unpack(particles *ps, const field_desc *const *f, int nf, PetscInt first, PetscInt n,
                       const char *buf);

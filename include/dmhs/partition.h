@@ -1,9 +1,9 @@
 /* Domain decomposition: a coarse grid of cells over the box (edge >= the ghost
  * width), each cell owned by one rank. Rank 0 partitions the cell graph,
- * weighted by work (particles and their bonded partners), with METIS and broadcasts the owner of every
- * cell, so that all ranks agree bit for bit. Repartitions when the load
- * imbalance (max/mean owned work: particles + bonded partners) passes a threshold. partition.c is the
- * only file that calls METIS. */
+ * weighted by work (particles and their bonded partners), with METIS and broadcasts the owner of
+ * every cell, so that all ranks agree bit for bit. Repartitions when the load imbalance (max/mean
+ * owned work: particles + bonded partners) passes a threshold. partition.c is the only file that
+ * calls METIS. */
 #ifndef DMHS_PARTITION_H
 #define DMHS_PARTITION_H
 #include <math.h>
@@ -13,21 +13,21 @@
 struct sim;
 
 typedef struct partition {
-  PetscInt nc[DMHS_DIM];  /* coarse cells per axis */
-  double lo[DMHS_DIM];    /* box lower corner */
-  double edge[DMHS_DIM];  /* cell edge along each axis (>= ghost width) */
+  PetscInt nc[DMHS_DIM]; /* coarse cells per axis */
+  double lo[DMHS_DIM];   /* box lower corner */
+  double edge[DMHS_DIM]; /* cell edge along each axis (>= ghost width) */
   double inv_edge[DMHS_DIM];
   PetscInt n_cells;
-  PetscMPIInt *owner;     /* rank owning each cell, row-major (iy * nc[0] + ix) */
-  char *frontier;         /* this rank's cells with a neighbour owned elsewhere or across a
-                             periodic boundary: only their particles can be ghosts anywhere */
+  PetscMPIInt *owner; /* rank owning each cell, row-major (iy * nc[0] + ix) */
+  char *frontier;     /* this rank's cells with a neighbour owned elsewhere or across a
+                         periodic boundary: only their particles can be ghosts anywhere */
   /* options */
-  double imbalance_max;   /* -partition_imbalance: repartition above this max/mean */
-  PetscInt interval;      /* -partition_interval: steps between imbalance checks (0 = never) */
+  double imbalance_max; /* -partition_imbalance: repartition above this max/mean */
+  PetscInt interval;    /* -partition_interval: steps between imbalance checks (0 = never) */
   /* state */
-  double imbalance;       /* max/mean owned work (particles + bonded partners) at the last check */
+  double imbalance; /* max/mean owned work (particles + bonded partners) at the last check */
   PetscInt n_repartitions;
-  PetscInt64 edge_cut;    /* METIS objective (cut edges) of the current partition */
+  PetscInt64 edge_cut; /* METIS objective (cut edges) of the current partition */
 } partition;
 
 /* Reads -partition_imbalance and -partition_interval. */

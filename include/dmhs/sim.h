@@ -51,8 +51,8 @@ typedef struct sim {
   /* mpi: domain decomposition, migration check, debug and dump options */
   partition part;
   migrate_check mig;
-  PetscBool debug_halo;                      /* -debug_halo: pair list vs brute force, every rebuild */
-  char dump_final[PETSC_MAX_PATH_LEN];       /* -dump_final <file> */
+  PetscBool debug_halo;                /* -debug_halo: pair list vs brute force, every rebuild */
+  char dump_final[PETSC_MAX_PATH_LEN]; /* -dump_final <file> */
 
   /* physics */
   sph_params sph;

@@ -19,6 +19,7 @@ int snapshot_file_width(const field_desc *f);
 /* File name (no directory) of snapshot number index. */
 PetscErrorCode snapshot_name(PetscInt index, char *name, size_t len);
 /* Writes snapshot number index of the current state; returns the particle count. */
-PetscErrorCode snapshot_write(struct sim *s, PetscInt index, PetscInt64 *n_global, PetscInt64 *n_bonds);
+PetscErrorCode snapshot_write(struct sim *s, PetscInt index, PetscInt64 *n_global,
+                              PetscInt64 *n_bonds);
 
 #endif

@@ -20,10 +20,10 @@ extern const char *const sph_wall_names[];
 
 typedef struct sph_params {
   sph_kernel_kind kernel;
-  double h;        /* kernel support radius [m] (W = 0 for r >= h, LAMMPS convention) */
-  double rho0;     /* reference density [kg/m^3] */
-  double c0;       /* reference sound speed [m/s] */
-  double nu;       /* kinematic viscosity [m^2/s] */
+  double h;    /* kernel support radius [m] (W = 0 for r >= h, LAMMPS convention) */
+  double rho0; /* reference density [kg/m^3] */
+  double c0;   /* reference sound speed [m/s] */
+  double nu;   /* kinematic viscosity [m^2/s] */
   sph_eos_kind eos;
   sph_density_kind density;
   double av_alpha; /* Monaghan artificial viscosity (0 = off) */
@@ -31,7 +31,7 @@ typedef struct sph_params {
   double p_background; /* p_b [Pa] added to every EOS: p = EOS(rho) + p_b (0 = off) */
   double delta;        /* density diffusion coefficient (Molteni & Colagrossi 2009; 0 = off) */
   PetscBool kernel_correction; /* corrected operators (sph_correction_iact.h) */
-  sph_wall_kind wall;  /* wall velocity extrapolation (sph_wall.c) */
+  sph_wall_kind wall;          /* wall velocity extrapolation (sph_wall.c) */
 } sph_params;
 
 /* Registers the sph options into s->sph (defaults already there) and returns the module. */

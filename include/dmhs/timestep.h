@@ -46,9 +46,9 @@ typedef struct timestep {
   double binding_value;
   double t_anchor; /* time and step of the last dt change */
   PetscInt step_anchor;
-  PetscInt n_changes; /* dt changes during this run (restart: since it) */
-  PetscBool warned;   /* fixed dt over a limit with -preflight warn: said once */
-  FILE *csv;          /* rank 0: dt.csv */
+  PetscInt n_changes;       /* dt changes during this run (restart: since it) */
+  PetscBool warned;         /* fixed dt over a limit with -preflight warn: said once */
+  FILE *csv;                /* rank 0: dt.csv */
   PetscInt substeps_option; /* -solid_substeps: 1 = off, 0 = automatic */
   PetscBool subcycling;     /* substeps_option != 1 */
   PetscInt n_sub;           /* sub-steps of the current step */

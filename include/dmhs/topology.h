@@ -42,17 +42,17 @@ typedef struct topology {
   /* gid-level tables, rebuilt when the structure changes (dirty) */
   PetscBool dirty;
   PetscInt n_gids;
-  PetscInt64 *gids;    /* sorted unique gids of bonded particles */
-  PetscInt *ex_start;  /* n_gids + 1 offsets into ex_gid */
-  PetscInt64 *ex_gid;  /* per gid: sorted excluded partners (1-2 and 1-3) */
+  PetscInt64 *gids;          /* sorted unique gids of bonded particles */
+  PetscInt *ex_start;        /* n_gids + 1 offsets into ex_gid */
+  PetscInt64 *ex_gid;        /* per gid: sorted excluded partners (1-2 and 1-3) */
   PetscBool special_include; /* -special_bonds_include: keep bonded pairs in pair sums */
 
   /* local resolution, valid until the next ghost build */
   PetscBool resolved; /* topology_resolve has run at least once */
-  PetscInt *head;  /* per gid slot: first local row with that gid, -1 = none */
-  PetscInt *owned; /* per gid slot: the owned row, -1 = none */
-  PetscInt *next;  /* per local row: next row with the same gid, -1 = end */
-  PetscInt *slot;  /* per local row: gid slot, -1 = not bonded (exclusion lookup) */
+  PetscInt *head;     /* per gid slot: first local row with that gid, -1 = none */
+  PetscInt *owned;    /* per gid slot: the owned row, -1 = none */
+  PetscInt *next;     /* per local row: next row with the same gid, -1 = end */
+  PetscInt *slot;     /* per local row: gid slot, -1 = not bonded (exclusion lookup) */
   PetscInt n_alloc_rows;
   PetscInt n_bond_local, n_alloc_bond_local;
   PetscInt (*bond)[2];    /* local rows */
@@ -70,8 +70,10 @@ PetscErrorCode topology_destroy(topology **t);
 /* Scene builders add the structure by global id. */
 PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type);
 /* The same with the bond's own rest length r0 [m] (bonds made at run time). */
-PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type, double r0);
-PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk, PetscInt type);
+PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type,
+                                    double r0);
+PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk,
+                                  PetscInt type);
 /* Index of a bonded particle's gid in t->gids (sorted), or -1 when it has no bond. */
 PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot);
 /* Number of bonded (1-2 and 1-3) partners of a particle: its bonded work, for
@@ -80,15 +82,19 @@ PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *cou
 /* Local entries from gids, after a ghost build (called by sim_rebuild_neighbours). */
 PetscErrorCode topology_resolve(topology *t, const particles *ps);
 /* True when pair (i, j) (local rows) is excluded from pair sums. */
-static inline PetscBool topology_excluded(const topology *t, const particles *ps, PetscInt i, PetscInt j) {
+static inline PetscBool topology_excluded(const topology *t, const particles *ps, PetscInt i,
+                                          PetscInt j) {
   const PetscInt si = t->slot[i];
-  if (si < 0 || t->slot[j] < 0) return PETSC_FALSE;
+  if (si < 0 || t->slot[j] < 0)
+    return PETSC_FALSE;
   const PetscInt64 g = ps->gid[j];
   PetscInt lo = t->ex_start[si], hi = t->ex_start[si + 1];
   while (lo < hi) { /* binary search in a short sorted list */
     const PetscInt mid = (lo + hi) / 2;
-    if (t->ex_gid[mid] < g) lo = mid + 1;
-    else hi = mid;
+    if (t->ex_gid[mid] < g)
+      lo = mid + 1;
+    else
+      hi = mid;
   }
   return lo < t->ex_start[si + 1] && t->ex_gid[lo] == g ? PETSC_TRUE : PETSC_FALSE;
 }

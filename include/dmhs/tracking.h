@@ -15,12 +15,12 @@ PetscInt tracking_pocket(double x, PetscInt n_pockets, double b, double x_left);
 /* Over all ranks, for fluid or parked particles with tag `tag` (type ignored):
  * counts[0 .. n_pockets] per pocket (the last is the overflow), the total n
  * and the mean x. Collective. */
-PetscErrorCode tracking_count(sim *s, PetscInt tag, PetscInt n_pockets, double b, double x_left, PetscInt64 counts[],
-                              PetscInt64 *n, double *mean_x);
+PetscErrorCode tracking_count(sim *s, PetscInt tag, PetscInt n_pockets, double b, double x_left,
+                              PetscInt64 counts[], PetscInt64 *n, double *mean_x);
 /* Mean over all ranks of (x - x0)[d] of owned particles for which sel(i) is
  * true, exact in fixed point; *n = 0 and *mean = 0 when none. Collective. */
-PetscErrorCode tracking_mean_displacement(sim *s, PetscBool (*sel)(const sim *, PetscInt, void *), void *ctx, int d,
-                                          double *mean, PetscInt64 *n);
+PetscErrorCode tracking_mean_displacement(sim *s, PetscBool (*sel)(const sim *, PetscInt, void *),
+                                          void *ctx, int d, double *mean, PetscInt64 *n);
 /* Least-squares slope of y(t) (GSL gsl_fit_linear); NAN when fewer than 2 points. */
 PetscErrorCode tracking_slope(const double *t, const double *y, PetscInt n, double *slope);
 

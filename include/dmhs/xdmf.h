@@ -23,7 +23,8 @@ typedef struct xdmf xdmf;
 PetscErrorCode xdmf_create(xdmf **x);
 PetscErrorCode xdmf_destroy(xdmf **x);
 /* Appends one snapshot (file name relative to the XDMF file). bonds may be NULL. */
-PetscErrorCode xdmf_add(xdmf *x, const char *h5_name, double t, PetscInt64 n, const xdmf_connectivity *bonds);
+PetscErrorCode xdmf_add(xdmf *x, const char *h5_name, double t, PetscInt64 n,
+                        const xdmf_connectivity *bonds);
 /* Drops entries at or after time t (a restart rewrites them). */
 void xdmf_truncate(xdmf *x, double t);
 /* Writes the whole index to path (via path.tmp + rename). */

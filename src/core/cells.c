@@ -74,12 +74,14 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
     c->cell_of[i] = iy * c->n[0] + ix;
     c->start[c->cell_of[i] + 1]++;
   }
-  for (PetscInt k = 0; k < n_cells; k++) c->start[k + 1] += c->start[k];
+  for (PetscInt k = 0; k < n_cells; k++)
+    c->start[k + 1] += c->start[k];
   {
     PetscInt *fill;
     PetscCall(PetscMalloc1(n_cells, &fill));
     PetscCall(PetscArraycpy(fill, c->start, n_cells));
-    for (PetscInt i = 0; i < n; i++) c->order[fill[c->cell_of[i]]++] = i;
+    for (PetscInt i = 0; i < n; i++)
+      c->order[fill[c->cell_of[i]]++] = i;
     PetscCall(PetscFree(fill));
   }
   /* mpi: within a cell, order by global id. The pairs of a particle are then
@@ -94,7 +96,8 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
         const PetscInt row = c->order[a];
         const PetscInt64 key = gid[row];
         PetscInt b = a;
-        for (; b > c->start[k] && gid[c->order[b - 1]] > key; b--) c->order[b] = c->order[b - 1];
+        for (; b > c->start[k] && gid[c->order[b - 1]] > key; b--)
+          c->order[b] = c->order[b - 1];
         c->order[b] = row;
       }
   }
@@ -111,7 +114,8 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
     const PetscInt i = c->order[a];
     c->xs[a][0] = ps->x[i][0];
     c->xs[a][1] = ps->x[i][1];
-    c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0) | (ps->type[i] != PTYPE_FLUID ? 4 : 0);
+    c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0) |
+                 (ps->type[i] != PTYPE_FLUID ? 4 : 0);
   }
 
   /* half stencil: each unordered pair of cells is visited once */
@@ -134,22 +138,27 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
             last = c->start[cell + 1];
           } else {
             const PetscInt nx = cx + stencil[st][0], ny = cy + stencil[st][1];
-            if (nx < 0 || nx >= c->n[0] || ny >= c->n[1]) continue;
+            if (nx < 0 || nx >= c->n[0] || ny >= c->n[1])
+              continue;
             const PetscInt other = ny * c->n[0] + nx;
             first = c->start[other];
             last = c->start[other + 1];
           }
           for (PetscInt b = first; b < last; b++) {
             const double dx = xa - xs[b][0], dy = ya - xs[b][1];
-            if (dx * dx + dy * dy >= cut2) continue;
+            if (dx * dx + dy * dy >= cut2)
+              continue;
             /* nobody owns a ghost-ghost pair; walls do not act on each other */
             const unsigned both = fa & flag[b];
-            if (both & 3) continue;
+            if (both & 3)
+              continue;
             const PetscInt i = c->order[a], j = c->order[b];
             /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 0): only between two
              * non-liquid particles, so liquid pairs never pay for the lookup */
-            if ((both & 4) && excl && topology_excluded(excl, ps, i, j)) continue;
-            if (c->n_pairs == c->n_alloc_pairs) PetscCall(cells_grow_pairs(c));
+            if ((both & 4) && excl && topology_excluded(excl, ps, i, j))
+              continue;
+            if (c->n_pairs == c->n_alloc_pairs)
+              PetscCall(cells_grow_pairs(c));
             c->pair_i[c->n_pairs] = PetscMin(i, j);
             c->pair_j[c->n_pairs] = PetscMax(i, j);
             c->n_pairs++;

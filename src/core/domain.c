@@ -4,7 +4,8 @@
 
 void domain_min_image(const domain *d, double dx[DMHS_DIM]) {
   for (int k = 0; k < DMHS_DIM; k++) {
-    if (!d->periodic[k]) continue;
+    if (!d->periodic[k])
+      continue;
     double L = domain_length(d, k);
     dx[k] -= L * round(dx[k] / L);
   }
@@ -12,20 +13,24 @@ void domain_min_image(const domain *d, double dx[DMHS_DIM]) {
 
 void domain_wrap(const domain *d, double x[DMHS_DIM]) {
   for (int k = 0; k < DMHS_DIM; k++) {
-    if (!d->periodic[k]) continue;
+    if (!d->periodic[k])
+      continue;
     double L = domain_length(d, k);
     /* floor handles particles more than one period away (never expected, but exact) */
     x[k] -= L * floor((x[k] - d->lo[k]) / L);
     /* round-off: (x - lo)/L may round up to a whole number just below hi, leaving x
      * a few ulps below lo; and x + L may round to hi */
-    if (x[k] < d->lo[k]) x[k] += L;
-    if (x[k] >= d->hi[k]) x[k] = d->lo[k];
+    if (x[k] < d->lo[k])
+      x[k] += L;
+    if (x[k] >= d->hi[k])
+      x[k] = d->lo[k];
   }
 }
 
 PetscBool domain_contains(const domain *d, const double x[DMHS_DIM]) {
   for (int k = 0; k < DMHS_DIM; k++)
-    if (!d->periodic[k] && (x[k] < d->lo[k] || x[k] > d->hi[k])) return PETSC_FALSE;
+    if (!d->periodic[k] && (x[k] < d->lo[k] || x[k] > d->hi[k]))
+      return PETSC_FALSE;
   return PETSC_TRUE;
 }
 

@@ -13,7 +13,8 @@
 #include <petscsys.h>
 
 #define ALL (FIELD_MIGRATE | FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT)
-#define ROW(member, w, k, fl, u) {#member, w, k, offsetof(particles, member), fl, u}
+#define ROW(member, w, k, fl, u)                                                                   \
+  { #member, w, k, offsetof(particles, member), fl, u }
 
 static const field_desc table[] = {
     ROW(gid, 1, FIELD_INT64, ALL, "1"),
@@ -71,11 +72,13 @@ static PetscBool frozen; /* particles exist: the set of rows can no longer chang
 static void fields_collect(void) {
   n_active = 0;
   for (size_t k = 0; k < N_ROWS; k++)
-    if (!(table[k].flags & FIELD_OPTIONAL) || enabled[k]) active[n_active++] = table[k];
+    if (!(table[k].flags & FIELD_OPTIONAL) || enabled[k])
+      active[n_active++] = table[k];
 }
 
 const field_desc *fields_table(size_t *count) {
-  if (!n_active) fields_collect();
+  if (!n_active)
+    fields_collect();
   *count = n_active;
   return active;
 }
@@ -83,12 +86,16 @@ const field_desc *fields_table(size_t *count) {
 PetscErrorCode fields_enable(const char *name) {
   PetscFunctionBeginUser;
   for (size_t k = 0; k < N_ROWS; k++) {
-    if (strcmp(table[k].name, name)) continue;
+    if (strcmp(table[k].name, name))
+      continue;
     PetscCheck(table[k].flags & FIELD_OPTIONAL, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
                "fields_enable: field %s always exists", name);
-    if (enabled[k]) PetscFunctionReturn(0);
-    PetscCheck(!frozen, PETSC_COMM_SELF, PETSC_ERR_ORDER,
-               "fields_enable(%s): particles already exist; enable fields in the scene's options pass", name);
+    if (enabled[k])
+      PetscFunctionReturn(0);
+    PetscCheck(
+        !frozen, PETSC_COMM_SELF, PETSC_ERR_ORDER,
+        "fields_enable(%s): particles already exist; enable fields in the scene's options pass",
+        name);
     enabled[k] = PETSC_TRUE;
     fields_collect();
     PetscFunctionReturn(0);
@@ -96,18 +103,23 @@ PetscErrorCode fields_enable(const char *name) {
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "fields_enable: no field named %s", name);
 }
 
-PetscBool fields_enabled(const char *name) { return fields_find(name) ? PETSC_TRUE : PETSC_FALSE; }
+PetscBool fields_enabled(const char *name) {
+  return fields_find(name) ? PETSC_TRUE : PETSC_FALSE;
+}
 
-void fields_freeze(PetscBool on) { frozen = on; }
+void fields_freeze(PetscBool on) {
+  frozen = on;
+}
 
 void fields_reset(void) {
-  for (size_t k = 0; k < N_ROWS; k++) enabled[k] = PETSC_FALSE;
+  for (size_t k = 0; k < N_ROWS; k++)
+    enabled[k] = PETSC_FALSE;
   frozen = PETSC_FALSE;
   fields_collect();
 }
 
 size_t fields_row_bytes(const field_desc *f) {
-  size_t elem = f->kind == FIELD_REAL ? sizeof(double)
+  size_t elem = f->kind == FIELD_REAL  ? sizeof(double)
                 : f->kind == FIELD_INT ? sizeof(PetscInt)
                                        : sizeof(PetscInt64);
   return elem * (size_t)f->width;
@@ -121,6 +133,7 @@ const field_desc *fields_find(const char *name) {
   size_t n;
   const field_desc *t = fields_table(&n);
   for (size_t k = 0; k < n; k++)
-    if (!strcmp(t[k].name, name)) return &t[k];
+    if (!strcmp(t[k].name, name))
+      return &t[k];
   return NULL;
 }

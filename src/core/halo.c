@@ -31,8 +31,8 @@ PetscErrorCode halo_create(halo *h, double width, MPI_Comm comm) {
   PetscCallMPI(MPI_Comm_rank(comm, &h->rank));
   PetscCallMPI(MPI_Comm_size(comm, &h->size));
   PetscCall(PetscMalloc2(h->size + 1, &h->send_off, h->size + 1, &h->recv_off));
-  PetscCall(PetscMalloc4(h->size, &h->send_cnt, h->size, &h->send_displ, h->size, &h->recv_cnt, h->size,
-                         &h->recv_displ));
+  PetscCall(PetscMalloc4(h->size, &h->send_cnt, h->size, &h->send_displ, h->size, &h->recv_cnt,
+                         h->size, &h->recv_displ));
   PetscFunctionReturn(0);
 }
 
@@ -84,14 +84,18 @@ static PetscErrorCode halo_build_serial(halo *h, const domain *d, particles *ps)
     for (int k = 0; k < DMHS_DIM; k++) {
       n_shift[k] = 1;
       shifts[k][0] = 0.0;
-      if (!d->periodic[k]) continue;
+      if (!d->periodic[k])
+        continue;
       const double L = domain_length(d, k);
-      if (ps->x[i][k] - d->lo[k] < h->width) shifts[k][n_shift[k]++] = L;
-      if (d->hi[k] - ps->x[i][k] <= h->width) shifts[k][n_shift[k]++] = -L;
+      if (ps->x[i][k] - d->lo[k] < h->width)
+        shifts[k][n_shift[k]++] = L;
+      if (d->hi[k] - ps->x[i][k] <= h->width)
+        shifts[k][n_shift[k]++] = -L;
     }
     for (int a = 0; a < n_shift[0]; a++)
       for (int b = 0; b < n_shift[1]; b++)
-        if (a || b) PetscCall(halo_push(h, 0, i, shifts[0][a], shifts[1][b]));
+        if (a || b)
+          PetscCall(halo_push(h, 0, i, shifts[0][a], shifts[1][b]));
   }
   PetscCall(particles_reserve(ps, ps->n_owned + h->n));
   for (PetscInt g = 0; g < h->n; g++) {
@@ -105,7 +109,8 @@ static PetscErrorCode halo_build_serial(halo *h, const domain *d, particles *ps)
 }
 
 /* Several ranks: the send list, grouped by destination (stable: owned order). */
-static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *part, const particles *ps) {
+static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *part,
+                                     const particles *ps) {
   const double w2 = h->width * h->width;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -115,7 +120,8 @@ static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *
       c[k] = (PetscInt)floor((x[k] - part->lo[k]) * part->inv_edge[k]);
       c[k] = PetscMin(PetscMax(c[k], 0), part->nc[k] - 1);
     }
-    if (!part->frontier[c[1] * part->nc[0] + c[0]]) continue; /* deep inside this rank */
+    if (!part->frontier[c[1] * part->nc[0] + c[0]])
+      continue; /* deep inside this rank */
     /* distinct (rank, shift) destinations of this particle: at most 9 */
     PetscMPIInt seen_rank[9];
     double seen_shift[9][DMHS_DIM];
@@ -143,13 +149,17 @@ static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *
           const double gap = x[k] < lo ? lo - x[k] : x[k] > hi ? x[k] - hi : 0.0;
           d2 += gap * gap;
         }
-        if (skip || d2 >= w2) continue;
+        if (skip || d2 >= w2)
+          continue;
         const PetscMPIInt owner = part->owner[wrapped[1] * part->nc[0] + wrapped[0]];
-        if (owner == h->rank && shift[0] == 0.0 && shift[1] == 0.0) continue; /* the particle itself */
+        if (owner == h->rank && shift[0] == 0.0 && shift[1] == 0.0)
+          continue; /* the particle itself */
         PetscBool dup = PETSC_FALSE;
         for (int s = 0; s < n_seen && !dup; s++)
-          dup = seen_rank[s] == owner && seen_shift[s][0] == shift[0] && seen_shift[s][1] == shift[1];
-        if (dup) continue;
+          dup =
+              seen_rank[s] == owner && seen_shift[s][0] == shift[0] && seen_shift[s][1] == shift[1];
+        if (dup)
+          continue;
         seen_rank[n_seen] = owner;
         seen_shift[n_seen][0] = shift[0];
         seen_shift[n_seen][1] = shift[1];
@@ -159,8 +169,10 @@ static PetscErrorCode halo_send_list(halo *h, const domain *d, const partition *
   }
   /* counting sort by destination, keeping owned order within each */
   PetscCall(PetscArrayzero(h->send_off, h->size + 1));
-  for (PetscInt e = 0; e < h->n; e++) h->send_off[h->dest[e] + 1]++;
-  for (PetscMPIInt r = 0; r < h->size; r++) h->send_off[r + 1] += h->send_off[r];
+  for (PetscInt e = 0; e < h->n; e++)
+    h->send_off[h->dest[e] + 1]++;
+  for (PetscMPIInt r = 0; r < h->size; r++)
+    h->send_off[r + 1] += h->send_off[r];
   {
     PetscInt *fill, *source;
     double(*shift)[DMHS_DIM];
@@ -194,8 +206,8 @@ static PetscErrorCode halo_exchange(halo *h, particles *ps, const field_desc *co
   const size_t bytes = particles_packed_bytes(f, nf);
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.halo_exchange, 0, 0, 0, 0));
-  PetscCheck((size_t)h->n * bytes < INT_MAX && (size_t)h->n_recv * bytes < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "halo: more than 2 GB of ghost data on one rank; run on more ranks");
+  PetscCheck((size_t)h->n * bytes < INT_MAX && (size_t)h->n_recv * bytes < INT_MAX, PETSC_COMM_SELF,
+             PETSC_ERR_SUP, "halo: more than 2 GB of ghost data on one rank; run on more ranks");
   PetscCall(halo_ensure(&h->send_buf, &h->send_buf_len, (size_t)h->n * bytes));
   PetscCall(halo_ensure(&h->recv_buf, &h->recv_buf_len, (size_t)h->n_recv * bytes));
   for (PetscMPIInt r = 0; r < h->size; r++) {
@@ -205,8 +217,8 @@ static PetscErrorCode halo_exchange(halo *h, particles *ps, const field_desc *co
     h->recv_displ[r] = (PetscMPIInt)(h->recv_off[r] * bytes);
   }
   particles_pack(ps, f, nf, h->source, h->n, (const double(*)[DMHS_DIM])h->shift, h->send_buf);
-  PetscCallMPI(MPI_Alltoallv(h->send_buf, h->send_cnt, h->send_displ, MPI_BYTE, h->recv_buf, h->recv_cnt,
-                             h->recv_displ, MPI_BYTE, h->comm));
+  PetscCallMPI(MPI_Alltoallv(h->send_buf, h->send_cnt, h->send_displ, MPI_BYTE, h->recv_buf,
+                             h->recv_cnt, h->recv_displ, MPI_BYTE, h->comm));
   particles_unpack(ps, f, nf, ps->n_owned, h->n_recv, h->recv_buf);
   PetscCall(PetscLogEventEnd(events.halo_exchange, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -232,7 +244,8 @@ PetscErrorCode halo_build(halo *h, const domain *d, const partition *part, parti
     }
     PetscCallMPI(MPI_Alltoall(counts_out, 1, MPI_INT, counts_in, 1, MPI_INT, h->comm));
     h->recv_off[0] = 0;
-    for (PetscMPIInt r = 0; r < h->size; r++) h->recv_off[r + 1] = h->recv_off[r] + counts_in[r];
+    for (PetscMPIInt r = 0; r < h->size; r++)
+      h->recv_off[r + 1] = h->recv_off[r] + counts_in[r];
     PetscCall(PetscFree2(counts_out, counts_in));
     h->n_recv = h->recv_off[h->size];
     PetscCall(particles_reserve(ps, ps->n_owned + h->n_recv));
@@ -247,10 +260,12 @@ PetscErrorCode halo_forward(halo *h, particles *ps, const char *const field_name
   const field_desc *f[HALO_MAX_FIELDS];
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.halo_forward, 0, 0, 0, 0));
-  PetscCheck(n_fields <= HALO_MAX_FIELDS, PETSC_COMM_SELF, PETSC_ERR_PLIB, "halo_forward: too many fields");
+  PetscCheck(n_fields <= HALO_MAX_FIELDS, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "halo_forward: too many fields");
   for (int k = 0; k < n_fields; k++) {
     f[k] = fields_find(field_names[k]);
-    PetscCheck(f[k], PETSC_COMM_SELF, PETSC_ERR_PLIB, "halo_forward: no field named '%s'", field_names[k]);
+    PetscCheck(f[k], PETSC_COMM_SELF, PETSC_ERR_PLIB, "halo_forward: no field named '%s'",
+               field_names[k]);
     PetscCheck(f[k]->flags & FIELD_GHOST, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "halo_forward: field '%s' is not a ghost field", field_names[k]);
   }

@@ -10,16 +10,18 @@
 PetscErrorCode halo_check_set_from_options(sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Halo check", NULL);
-  PetscCall(PetscOptionsBool("-debug_halo",
-                             "Check every step that the pair list equals a brute-force neighbour search (slow)",
-                             NULL, s->debug_halo, &s->debug_halo, NULL));
+  PetscCall(PetscOptionsBool(
+      "-debug_halo",
+      "Check every step that the pair list equals a brute-force neighbour search (slow)", NULL,
+      s->debug_halo, &s->debug_halo, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
 
 static int halo_check_cmp_pair(const void *a, const void *b) {
   const PetscInt64 *p = a, *q = b;
-  if (p[0] != q[0]) return (p[0] > q[0]) - (p[0] < q[0]);
+  if (p[0] != q[0])
+    return (p[0] > q[0]) - (p[0] < q[0]);
   return (p[1] > q[1]) - (p[1] < q[1]);
 }
 
@@ -31,7 +33,8 @@ static int halo_check_cmp_gid(const void *a, const void *b) {
 PetscErrorCode halo_check_pairs(sim *s) {
   const particles *ps = &s->ps;
   const PetscInt n_owned = ps->n_owned;
-  const double cut = PetscMax(s->pair_cutoff, s->list_cutoff), cut2 = cut * cut; /* the list radius */
+  const double cut = PetscMax(s->pair_cutoff, s->list_cutoff),
+               cut2 = cut * cut; /* the list radius */
   PetscMPIInt n_mine = (PetscMPIInt)(4 * n_owned), *counts, *displs;
   double *mine, *all;
   PetscInt64 *listed, *found;
@@ -41,7 +44,8 @@ PetscErrorCode halo_check_pairs(sim *s) {
   PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
   PetscCallMPI(MPI_Allgather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, s->comm));
   displs[0] = 0;
-  for (PetscMPIInt r = 0; r < s->size; r++) displs[r + 1] = displs[r] + counts[r];
+  for (PetscMPIInt r = 0; r < s->size; r++)
+    displs[r + 1] = displs[r] + counts[r];
   const PetscInt n_all = displs[s->size] / 4;
   PetscCall(PetscMalloc2(n_mine + 1, &mine, displs[s->size] + 1, &all));
   for (PetscInt i = 0; i < n_owned; i++) {
@@ -73,8 +77,10 @@ PetscErrorCode halo_check_pairs(sim *s) {
     PetscInt n_found = 0;
     for (PetscInt j = 0; j < n_all; j++) {
       const double *o = all + 4 * j;
-      if ((PetscInt64)o[0] == ps->gid[i]) continue;
-      if (ps->type[i] == PTYPE_WALL && (PetscInt)o[1] == PTYPE_WALL) continue;
+      if ((PetscInt64)o[0] == ps->gid[i])
+        continue;
+      if (ps->type[i] == PTYPE_WALL && (PetscInt)o[1] == PTYPE_WALL)
+        continue;
       double d2 = 0;
       for (int k = 0; k < DMHS_DIM; k++) {
         /* the image as halo.c makes it: x + shift, shift in {0, +-L} */
@@ -83,25 +89,30 @@ PetscErrorCode halo_check_pairs(sim *s) {
           const double L = domain_length(&s->dom, k);
           /* pick the image nearest to x_i among x_j, x_j + L, x_j - L */
           const double c0 = o[2 + k], c1 = o[2 + k] + L, c2 = o[2 + k] - L;
-          const double e0 = fabs(ps->x[i][k] - c0), e1 = fabs(ps->x[i][k] - c1), e2 = fabs(ps->x[i][k] - c2);
+          const double e0 = fabs(ps->x[i][k] - c0), e1 = fabs(ps->x[i][k] - c1),
+                       e2 = fabs(ps->x[i][k] - c2);
           xj = e0 <= e1 && e0 <= e2 ? c0 : e1 <= e2 ? c1 : c2;
         }
         const double dx = ps->x[i][k] - xj;
         d2 += dx * dx;
       }
-      if (d2 < cut2) found[n_found++] = (PetscInt64)o[0];
+      if (d2 < cut2)
+        found[n_found++] = (PetscInt64)o[0];
     }
     qsort(found, (size_t)n_found, sizeof(PetscInt64), halo_check_cmp_gid);
     PetscInt first = at;
-    while (at < n_listed && listed[2 * at] == i) at++;
+    while (at < n_listed && listed[2 * at] == i)
+      at++;
     const PetscInt n_have = at - first;
     PetscBool same = n_have == n_found ? PETSC_TRUE : PETSC_FALSE;
-    for (PetscInt k = 0; k < n_found && same; k++) same = listed[2 * (first + k) + 1] == found[k];
+    for (PetscInt k = 0; k < n_found && same; k++)
+      same = listed[2 * (first + k) + 1] == found[k];
     if (!same) {
       bad++;
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "-debug_halo: rank %d step %" PetscInt_FMT ": particle gid %" PetscInt64_FMT
-                            " has %" PetscInt_FMT " neighbours in the pair list, brute force finds %" PetscInt_FMT "\n",
+                            "-debug_halo: rank %d step %" PetscInt_FMT
+                            ": particle gid %" PetscInt64_FMT " has %" PetscInt_FMT
+                            " neighbours in the pair list, brute force finds %" PetscInt_FMT "\n",
                             (int)s->rank, s->step, ps->gid[i], n_have, n_found));
     }
   }
@@ -112,7 +123,8 @@ PetscErrorCode halo_check_pairs(sim *s) {
   PetscInt bad_total;
   PetscCallMPI(MPI_Allreduce(&bad, &bad_total, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCheck(bad_total == 0, s->comm, PETSC_ERR_PLIB,
-             "-debug_halo: step %" PetscInt_FMT ": %" PetscInt_FMT " particle(s) whose pair-list neighbours differ from "
+             "-debug_halo: step %" PetscInt_FMT ": %" PetscInt_FMT
+             " particle(s) whose pair-list neighbours differ from "
              "a brute-force search (ghosts missing or duplicated)",
              s->step, bad_total);
   PetscFunctionReturn(0);

@@ -21,7 +21,8 @@
  * down to 2^-24 relative, they agree bit for bit on any decomposition but for
  * a value within an ulp of a grid point. */
 static double dt_limit_round(double v) {
-  if (!isfinite(v) || v <= 0) return v;
+  if (!isfinite(v) || v <= 0)
+    return v;
   int e;
   const double m = frexp(v, &e);
   return ldexp(floor(m * 16777216.0) / 16777216.0, e);
@@ -59,7 +60,8 @@ PetscErrorCode integrate_first_half(sim *s) {
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (subcycled && ps->type[i] == PTYPE_SOLID) {
       /* its density belongs to the liquid's step; its motion to the sub-steps */
-      if (continuity) ps->rho[i] += half * ps->drho[i];
+      if (continuity)
+        ps->rho[i] += half * ps->drho[i];
       continue;
     }
     if (ps->type[i] == PTYPE_WALL) {
@@ -74,7 +76,8 @@ PetscErrorCode integrate_first_half(sim *s) {
       ps->v[i][k] += half * ps->a[i][k];
       ps->x[i][k] += dt * ps->v[i][k];
     }
-    if (continuity) ps->rho[i] += half * ps->drho[i];
+    if (continuity)
+      ps->rho[i] += half * ps->drho[i];
   }
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -89,14 +92,19 @@ PetscErrorCode integrate_second_half(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] == PTYPE_WALL) continue;
+    if (ps->type[i] == PTYPE_WALL)
+      continue;
     if (ps->type[i] == PTYPE_SOLID && half_solid != half) {
-      for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half_solid * ps->a[i][k];
-      if (continuity) ps->rho[i] += half * ps->drho[i];
+      for (int k = 0; k < DMHS_DIM; k++)
+        ps->v[i][k] += half_solid * ps->a[i][k];
+      if (continuity)
+        ps->rho[i] += half * ps->drho[i];
       continue;
     }
-    for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half * ps->a[i][k];
-    if (continuity) ps->rho[i] += half * ps->drho[i];
+    for (int k = 0; k < DMHS_DIM; k++)
+      ps->v[i][k] += half * ps->a[i][k];
+    if (continuity)
+      ps->rho[i] += half * ps->drho[i];
   }
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -108,7 +116,8 @@ static int neighbours_at_rest(double h, double dx) {
   int n = 0;
   for (int a = -reach; a <= reach; a++)
     for (int b = -reach; b <= reach; b++)
-      if ((a || b) && sqrt((double)(a * a + b * b)) * dx < h) n++;
+      if ((a || b) && sqrt((double)(a * a + b * b)) * dx < h)
+        n++;
   return n;
 }
 
@@ -119,33 +128,39 @@ PetscErrorCode integrate_stability_report(sim *s) {
   PetscCall(timestep_collect_limits(s, &limits));
   PetscCall(timestep_choose_first(s, &limits)); /* -dt 0: the first dt */
   if (s->ts.subcycling)
-    PetscCall(PetscPrintf(s->comm,
-                          "Stability report (pre-flight), dt = %g s, %" PetscInt_FMT
-                          " solid sub-steps (the solids' own limits, marked *, against dt/%" PetscInt_FMT "):\n",
-                          s->dt, s->ts.n_sub, s->ts.n_sub));
-  else PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
+    PetscCall(PetscPrintf(
+        s->comm,
+        "Stability report (pre-flight), dt = %g s, %" PetscInt_FMT
+        " solid sub-steps (the solids' own limits, marked *, against dt/%" PetscInt_FMT "):\n",
+        s->dt, s->ts.n_sub, s->ts.n_sub));
+  else
+    PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
   for (int k = 0; k < limits.n; k++) {
     const dt_limit *l = &limits.item[k];
     const double dt = timestep_dt_for(s, l->inner);
     const PetscBool over = dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s%s\n", l->name, l->formula, l->value,
-                          dt / l->value, s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
+    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s%s\n", l->name,
+                          l->formula, l->value, dt / l->value,
+                          s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
     problems += over;
   }
   if (s->sph_enabled && s->dx > 0) {
     const int nb = neighbours_at_rest(s->sph.h, s->dx);
     const PetscBool few = nb < 12 ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscPrintf(s->comm, "  %-18s h/dx = %.3g: %d neighbours inside the support at rest spacing%s\n",
-                          "sph support", s->sph.h / s->dx, nb,
-                          few ? "  TOO FEW (need >= 12 in 2D; h <= dx leaves none)" : ""));
+    PetscCall(PetscPrintf(
+        s->comm, "  %-18s h/dx = %.3g: %d neighbours inside the support at rest spacing%s\n",
+        "sph support", s->sph.h / s->dx, nb,
+        few ? "  TOO FEW (need >= 12 in 2D; h <= dx leaves none)" : ""));
     problems += few;
   }
   if (problems) {
-    const char *what = "dt exceeds a time-step limit or the kernel support holds too few neighbours "
-                       "(see the report above): lower -dt (or -dt 0 for automatic) / raise -sph_h";
+    const char *what =
+        "dt exceeds a time-step limit or the kernel support holds too few neighbours "
+        "(see the report above): lower -dt (or -dt 0 for automatic) / raise -sph_h";
     PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
                "pre-flight check failed: %s; -preflight warn runs anyway", what);
-    PetscCall(PetscPrintf(s->comm, "WARNING: pre-flight check: %s (continuing: -preflight warn)\n", what));
+    PetscCall(PetscPrintf(s->comm, "WARNING: pre-flight check: %s (continuing: -preflight warn)\n",
+                          what));
   }
   PetscFunctionReturn(0);
 }
@@ -156,20 +171,25 @@ PetscErrorCode integrate_check_state(sim *s) {
   PetscCall(PetscLogEventBegin(events.check_state, 0, 0, 0, 0));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     const char *bad = NULL;
-    if (!isfinite(ps->x[i][0]) || !isfinite(ps->x[i][1])) bad = "position";
-    else if (!isfinite(ps->v[i][0]) || !isfinite(ps->v[i][1])) bad = "velocity";
-    else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0) bad = "density";
-    else if (!isfinite(ps->p[i])) bad = "pressure";
+    if (!isfinite(ps->x[i][0]) || !isfinite(ps->x[i][1]))
+      bad = "position";
+    else if (!isfinite(ps->v[i][0]) || !isfinite(ps->v[i][1]))
+      bad = "velocity";
+    else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0)
+      bad = "density";
+    else if (!isfinite(ps->p[i]))
+      bad = "pressure";
     else if (!isfinite(ps->a[i][0]) || !isfinite(ps->a[i][1]))
       bad = "acceleration";
     else if (!isfinite(ps->drho[i]))
       bad = "density rate";
-    PetscCheck(bad || domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
-               "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
-               ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
-               "(try a smaller -dt)",
-               ps->gid[i], s->step, s->t, ps->x[i][0], ps->x[i][1], s->dom.lo[0], s->dom.hi[0], s->dom.lo[1],
-               s->dom.hi[1]);
+    PetscCheck(
+        bad || domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
+        "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
+        ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
+        "(try a smaller -dt)",
+        ps->gid[i], s->step, s->t, ps->x[i][0], ps->x[i][1], s->dom.lo[0], s->dom.hi[0],
+        s->dom.lo[1], s->dom.hi[1]);
     PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_FP,
                "run blew up at step %" PetscInt_FMT ", t = %g s: particle gid %" PetscInt64_FMT
                " (type %" PetscInt_FMT

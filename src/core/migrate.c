@@ -21,9 +21,10 @@
 PetscErrorCode migrate_set_from_options(migrate_check *m, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Migration", NULL);
-  PetscCall(PetscOptionsBool("-debug_migration",
-                             "Check every step that the global particle count and id set are unchanged", NULL,
-                             m->enabled, &m->enabled, NULL));
+  PetscCall(
+      PetscOptionsBool("-debug_migration",
+                       "Check every step that the global particle count and id set are unchanged",
+                       NULL, m->enabled, &m->enabled, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
@@ -51,19 +52,23 @@ static PetscErrorCode migrate_fingerprint(sim *s, uint64_t out[3]) {
 PetscErrorCode migrate_check_ids(migrate_check *m, sim *s) {
   uint64_t now[3];
   PetscFunctionBeginUser;
-  if (!m->enabled) PetscFunctionReturn(0);
+  if (!m->enabled)
+    PetscFunctionReturn(0);
   PetscCall(migrate_fingerprint(s, now));
   if (!m->have_reference) {
-    for (int k = 0; k < 3; k++) m->reference[k] = now[k];
+    for (int k = 0; k < 3; k++)
+      m->reference[k] = now[k];
     m->have_reference = PETSC_TRUE;
     PetscFunctionReturn(0);
   }
   PetscCheck(now[0] == m->reference[0], s->comm, PETSC_ERR_PLIB,
-             "-debug_migration: step %" PetscInt_FMT ": %" PetscInt64_FMT " particles over the ranks, expected %" PetscInt64_FMT
-             " (particles were %s)",
-             s->step, (PetscInt64)now[0], (PetscInt64)m->reference[0], now[0] < m->reference[0] ? "lost" : "duplicated");
+             "-debug_migration: step %" PetscInt_FMT ": %" PetscInt64_FMT
+             " particles over the ranks, expected %" PetscInt64_FMT " (particles were %s)",
+             s->step, (PetscInt64)now[0], (PetscInt64)m->reference[0],
+             now[0] < m->reference[0] ? "lost" : "duplicated");
   PetscCheck(now[1] == m->reference[1] && now[2] == m->reference[2], s->comm, PETSC_ERR_PLIB,
-             "-debug_migration: step %" PetscInt_FMT ": the particle count is right but the set of global ids changed "
+             "-debug_migration: step %" PetscInt_FMT
+             ": the particle count is right but the set of global ids changed "
              "(a particle was duplicated and another lost)",
              s->step);
   PetscFunctionReturn(0);
@@ -72,10 +77,12 @@ PetscErrorCode migrate_check_ids(migrate_check *m, sim *s) {
 PetscErrorCode migrate_report(migrate_check *m, sim *s) {
   PetscInt64 moved;
   PetscFunctionBeginUser;
-  if (!m->enabled) PetscFunctionReturn(0);
+  if (!m->enabled)
+    PetscFunctionReturn(0);
   PetscCallMPI(MPI_Allreduce(&m->moved, &moved, 1, MPIU_INT64, MPI_SUM, s->comm));
   PetscCall(PetscPrintf(s->comm,
-                        "-debug_migration: %" PetscInt64_FMT " particles, count and ids unchanged at every step; %" PetscInt64_FMT
+                        "-debug_migration: %" PetscInt64_FMT
+                        " particles, count and ids unchanged at every step; %" PetscInt64_FMT
                         " moves between ranks, %" PetscInt_FMT " repartition(s)\n",
                         (PetscInt64)m->reference[0], moved, s->part.n_repartitions));
   PetscFunctionReturn(0);
@@ -109,11 +116,14 @@ static PetscErrorCode migrate_exchange(sim *s) {
   /* leaving rows grouped by destination, in owned order */
   PetscCall(PetscMalloc1(n_leave, &leaving));
   fill[0] = 0;
-  for (PetscMPIInt r = 0; r < size; r++) fill[r + 1] = fill[r] + cnt_out[r];
+  for (PetscMPIInt r = 0; r < size; r++)
+    fill[r + 1] = fill[r] + cnt_out[r];
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    if (dest[i] != me) leaving[fill[dest[i]]++] = i;
+    if (dest[i] != me)
+      leaving[fill[dest[i]]++] = i;
   PetscInt n_arrive = 0;
-  for (PetscMPIInt r = 0; r < size; r++) n_arrive += cnt_in[r];
+  for (PetscMPIInt r = 0; r < size; r++)
+    n_arrive += cnt_in[r];
   PetscCheck((size_t)PetscMax(n_leave, n_arrive) * bytes < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP,
              "migrate: more than 2 GB of particles moving at once");
   size_t off_out = 0, off_in = 0;
@@ -127,12 +137,15 @@ static PetscErrorCode migrate_exchange(sim *s) {
   }
   PetscCall(PetscMalloc2(off_out + 1, &send_buf, off_in + 1, &recv_buf));
   particles_pack(ps, f, nf, leaving, n_leave, NULL, send_buf);
-  PetscCallMPI(MPI_Alltoallv(send_buf, b_out, d_out, MPI_BYTE, recv_buf, b_in, d_in, MPI_BYTE, s->comm));
+  PetscCallMPI(
+      MPI_Alltoallv(send_buf, b_out, d_out, MPI_BYTE, recv_buf, b_in, d_in, MPI_BYTE, s->comm));
   /* compact the staying particles (every field: they stay whole), then append arrivals */
   PetscInt kept = 0;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (dest[i] != me) continue;
-    if (kept != i) particles_copy_row(ps, kept, i, ~0u);
+    if (dest[i] != me)
+      continue;
+    if (kept != i)
+      particles_copy_row(ps, kept, i, ~0u);
     kept++;
   }
   PetscCall(particles_reserve(ps, kept + n_arrive));
@@ -153,12 +166,13 @@ PetscErrorCode migrate_particles(sim *s) {
   ps->n_ghost = 0;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     domain_wrap(&s->dom, ps->x[i]);
-    PetscCheck(domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
-               "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
-               ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
-               "(try a smaller -dt)",
-               ps->gid[i], s->step, s->t, ps->x[i][0], ps->x[i][1], s->dom.lo[0], s->dom.hi[0], s->dom.lo[1],
-               s->dom.hi[1]);
+    PetscCheck(
+        domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
+        "particle gid %" PetscInt64_FMT " escaped the domain at step %" PetscInt_FMT
+        ", t = %g s: x = (%g, %g) outside [%g, %g] x [%g, %g]; the run is unstable or a wall leaks "
+        "(try a smaller -dt)",
+        ps->gid[i], s->step, s->t, ps->x[i][0], ps->x[i][1], s->dom.lo[0], s->dom.hi[0],
+        s->dom.lo[1], s->dom.hi[1]);
   }
   if (s->size > 1) {
     PetscCall(partition_check(&s->part, s));

@@ -14,7 +14,8 @@ PetscErrorCode particles_destroy(particles *ps) {
   size_t n;
   const field_desc *t = fields_table(&n);
   PetscFunctionBeginUser;
-  for (size_t k = 0; k < n; k++) PetscCall(PetscFree(*fields_member(ps, &t[k])));
+  for (size_t k = 0; k < n; k++)
+    PetscCall(PetscFree(*fields_member(ps, &t[k])));
   PetscCall(PetscMemzero(ps, sizeof(*ps)));
   PetscFunctionReturn(0);
 }
@@ -23,7 +24,8 @@ PetscErrorCode particles_reserve(particles *ps, PetscInt n) {
   size_t nf;
   const field_desc *t = fields_table(&nf);
   PetscFunctionBeginUser;
-  if (n <= ps->capacity) PetscFunctionReturn(0);
+  if (n <= ps->capacity)
+    PetscFunctionReturn(0);
   fields_freeze(PETSC_TRUE);
   /* grow geometrically so appending one particle at a time stays linear */
   PetscInt cap = PetscMax(n, ps->capacity + ps->capacity / 2 + 16);
@@ -45,7 +47,8 @@ PetscErrorCode particles_reserve(particles *ps, PetscInt n) {
         "particle); use more ranks or fewer particles",
         (double)row * (double)cap / 1e6, t[k].name, cap, n,
         (double)per_particle * (double)cap / 1e6, per_particle);
-    if (*member) PetscCall(PetscMemcpy(fresh, *member, row * (size_t)ps->capacity));
+    if (*member)
+      PetscCall(PetscMemcpy(fresh, *member, row * (size_t)ps->capacity));
     PetscCall(PetscFree(*member));
     *member = fresh;
   }
@@ -54,8 +57,8 @@ PetscErrorCode particles_reserve(particles *ps, PetscInt n) {
 }
 
 PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type type,
-                                   const double x[DMHS_DIM], const double v[DMHS_DIM],
-                                   double mass, double rho, PetscInt *index) {
+                                   const double x[DMHS_DIM], const double v[DMHS_DIM], double mass,
+                                   double rho, PetscInt *index) {
   PetscFunctionBeginUser;
   PetscCheck(ps->n_ghost == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
              "particles_add_owned: ghosts must be dropped before adding owned particles");
@@ -77,7 +80,8 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
   ps->rho[i] = rho;
   ps->drho[i] = 0.0;
   ps->p[i] = 0.0;
-  if (index) *index = i;
+  if (index)
+    *index = i;
   PetscFunctionReturn(0);
 }
 
@@ -85,7 +89,8 @@ void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flag
   size_t nf;
   const field_desc *t = fields_table(&nf);
   for (size_t k = 0; k < nf; k++) {
-    if (!(t[k].flags & flags)) continue;
+    if (!(t[k].flags & flags))
+      continue;
     size_t row = fields_row_bytes(&t[k]);
     char *base = *fields_member(ps, &t[k]);
     memcpy(base + row * (size_t)dst, base + row * (size_t)src, row);
@@ -94,7 +99,8 @@ void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flag
 
 PetscInt particles_count_type(const particles *ps, particle_type type) {
   PetscInt n = 0;
-  for (PetscInt i = 0; i < ps->n_owned; i++) n += ps->type[i] == (PetscInt)type;
+  for (PetscInt i = 0; i < ps->n_owned; i++)
+    n += ps->type[i] == (PetscInt)type;
   return n;
 }
 
@@ -104,18 +110,20 @@ int particles_select_fields(unsigned flags, const field_desc **out, int max) {
   const field_desc *t = fields_table(&nf);
   int n = 0;
   for (size_t k = 0; k < nf && n < max; k++)
-    if (t[k].flags & flags) out[n++] = &t[k];
+    if (t[k].flags & flags)
+      out[n++] = &t[k];
   return n;
 }
 
 size_t particles_packed_bytes(const field_desc *const *f, int nf) {
   size_t b = 0;
-  for (int k = 0; k < nf; k++) b += fields_row_bytes(f[k]);
+  for (int k = 0; k < nf; k++)
+    b += fields_row_bytes(f[k]);
   return b;
 }
 
-void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows, PetscInt n,
-                    const double (*shift)[DMHS_DIM], char *buf) {
+void particles_pack(const particles *ps, const field_desc *const *f, int nf, const PetscInt *rows,
+                    PetscInt n, const double (*shift)[DMHS_DIM], char *buf) {
   for (PetscInt e = 0; e < n; e++) {
     const PetscInt r = rows[e];
     for (int k = 0; k < nf; k++) {
@@ -124,9 +132,11 @@ void particles_pack(const particles *ps, const field_desc *const *f, int nf, con
       if (shift && f[k]->offset == offsetof(particles, x)) {
         double x[DMHS_DIM];
         memcpy(x, base + row * (size_t)r, row);
-        for (int d = 0; d < DMHS_DIM; d++) x[d] += shift[e][d];
+        for (int d = 0; d < DMHS_DIM; d++)
+          x[d] += shift[e][d];
         memcpy(buf, x, row);
-      } else memcpy(buf, base + row * (size_t)r, row);
+      } else
+        memcpy(buf, base + row * (size_t)r, row);
       buf += row;
     }
   }

@@ -16,14 +16,15 @@
 #include "dmhs/partition.h"
 #include "dmhs/events.h"
 
-#define PARTITION_WEIGHT_PER_PARTICLE 16
+#define PARTITION_WEIGHT_PER_PARTICLE       16
 #define PARTITION_WEIGHT_PER_BONDED_PARTNER 4
 
 /* A particle's share of a cell's vertex weight: its pairs plus its bonded work. */
 static PetscErrorCode partition_particle_work(sim *s, PetscInt64 gid, PetscInt *work) {
   PetscInt partners = 0;
   PetscFunctionBeginUser;
-  if (s->topo) PetscCall(topology_partner_count(s->topo, gid, &partners));
+  if (s->topo)
+    PetscCall(topology_partner_count(s->topo, gid, &partners));
   *work = PARTITION_WEIGHT_PER_PARTICLE + PARTITION_WEIGHT_PER_BONDED_PARTNER * partners;
   PetscFunctionReturn(0);
 }
@@ -43,23 +44,25 @@ PetscErrorCode partition_set_from_options(partition *p, sim *s) {
   p->imbalance_max = 1.2;
   p->interval = 100;
   PetscOptionsBegin(s->comm, NULL, "Domain decomposition (partition)", NULL);
-  PetscCall(PetscOptionsReal("-partition_imbalance",
-                             "Repartition when max/mean owned particles over ranks exceeds this [1]", NULL,
-                             p->imbalance_max, &p->imbalance_max, NULL));
-  PetscCall(PetscOptionsInt("-partition_interval", "Steps between load-imbalance checks (0 = never repartition)",
-                            NULL, p->interval, &p->interval, NULL));
+  PetscCall(
+      PetscOptionsReal("-partition_imbalance",
+                       "Repartition when max/mean owned particles over ranks exceeds this [1]",
+                       NULL, p->imbalance_max, &p->imbalance_max, NULL));
+  PetscCall(PetscOptionsInt("-partition_interval",
+                            "Steps between load-imbalance checks (0 = never repartition)", NULL,
+                            p->interval, &p->interval, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->imbalance_max >= 1.0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-partition_imbalance must be >= 1 (got %g)",
-             p->imbalance_max);
-  PetscCheck(p->interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-partition_interval must be >= 0 (got %" PetscInt_FMT ")",
-             p->interval);
+  PetscCheck(p->imbalance_max >= 1.0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-partition_imbalance must be >= 1 (got %g)", p->imbalance_max);
+  PetscCheck(p->interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-partition_interval must be >= 0 (got %" PetscInt_FMT ")", p->interval);
   p->imbalance = 1.0;
   PetscFunctionReturn(0);
 }
 
 /* The cell graph in CSR form (8 neighbours, periodic wrap, no duplicates, no self loops). */
-static PetscErrorCode partition_graph(const partition *p, const PetscBool periodic[DMHS_DIM], idx_t **xadj_out,
-                                      idx_t **adjncy_out) {
+static PetscErrorCode partition_graph(const partition *p, const PetscBool periodic[DMHS_DIM],
+                                      idx_t **xadj_out, idx_t **adjncy_out) {
   idx_t *xadj, *adjncy;
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(p->n_cells + 1, &xadj));
@@ -73,15 +76,20 @@ static PetscErrorCode partition_graph(const partition *p, const PetscBool period
       for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++) {
           PetscInt ux = cx + dx, uy = cy + dy;
-          if (!periodic[0] && (ux < 0 || ux >= p->nc[0])) continue;
-          if (!periodic[1] && (uy < 0 || uy >= p->nc[1])) continue;
+          if (!periodic[0] && (ux < 0 || ux >= p->nc[0]))
+            continue;
+          if (!periodic[1] && (uy < 0 || uy >= p->nc[1]))
+            continue;
           ux = (ux + p->nc[0]) % p->nc[0];
           uy = (uy + p->nc[1]) % p->nc[1];
           const idx_t other = (idx_t)(uy * p->nc[0] + ux);
-          if (other == self) continue;
+          if (other == self)
+            continue;
           PetscBool seen = PETSC_FALSE;
-          for (idx_t k = first; k < n; k++) seen = seen || adjncy[k] == other;
-          if (!seen) adjncy[n++] = other;
+          for (idx_t k = first; k < n; k++)
+            seen = seen || adjncy[k] == other;
+          if (!seen)
+            adjncy[n++] = other;
         }
       xadj[self + 1] = n;
     }
@@ -127,23 +135,28 @@ static PetscErrorCode partition_run(partition *p, sim *s, const PetscInt *counts
     idx_t options[METIS_NOPTIONS];
     PetscCall(partition_graph(p, s->dom.periodic, &xadj, &adjncy));
     PetscCall(PetscMalloc2(p->n_cells, &vwgt, p->n_cells, &part));
-    for (PetscInt c = 0; c < p->n_cells; c++) vwgt[c] = (idx_t)(counts[c] + 1); /* each cell's work */
+    for (PetscInt c = 0; c < p->n_cells; c++)
+      vwgt[c] = (idx_t)(counts[c] + 1); /* each cell's work */
     PetscCall(partition_metis_check(METIS_SetDefaultOptions(options), "SetDefaultOptions"));
     options[METIS_OPTION_NUMBERING] = 0;
     options[METIS_OPTION_SEED] = 7; /* fixed: the same counts always give the same partition */
-    options[METIS_OPTION_CONTIG] = 1; /* connected subdomains: fewer neighbour ranks, thinner halos */
-    const int rc = METIS_PartGraphKway(&nvtxs, &ncon, xadj, adjncy, vwgt, NULL, NULL, &nparts, NULL, NULL, options,
-                                       &objval, part);
+    options[METIS_OPTION_CONTIG] =
+        1; /* connected subdomains: fewer neighbour ranks, thinner halos */
+    const int rc = METIS_PartGraphKway(&nvtxs, &ncon, xadj, adjncy, vwgt, NULL, NULL, &nparts, NULL,
+                                       NULL, options, &objval, part);
     if (rc == METIS_OK) {
-      for (PetscInt c = 0; c < p->n_cells; c++) p->owner[c] = (PetscMPIInt)part[c];
+      for (PetscInt c = 0; c < p->n_cells; c++)
+        p->owner[c] = (PetscMPIInt)part[c];
       status[1] = objval;
-    } else status[0] = rc;
+    } else
+      status[0] = rc;
     PetscCall(PetscFree2(vwgt, part));
     PetscCall(PetscFree(xadj));
     PetscCall(PetscFree(adjncy));
   }
   PetscCallMPI(MPI_Bcast(status, 2, MPIU_INT64, 0, s->comm));
-  if (status[0]) PetscCall(partition_metis_check((int)status[0], "PartGraphKway (on rank 0)"));
+  if (status[0])
+    PetscCall(partition_metis_check((int)status[0], "PartGraphKway (on rank 0)"));
   PetscCallMPI(MPI_Bcast(p->owner, (PetscMPIInt)p->n_cells, MPI_INT, 0, s->comm));
   p->edge_cut = status[1];
   partition_mark_frontier(p, s);
@@ -163,15 +176,17 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
     p->lo[k] = s->dom.lo[k];
     p->edge[k] = L / (double)p->nc[k];
     p->inv_edge[k] = (double)p->nc[k] / L;
-    PetscCheck(p->edge[k] >= s->hal.width, s->comm, PETSC_ERR_PLIB, "partition: cell edge %g < ghost width %g",
-               p->edge[k], s->hal.width);
+    PetscCheck(p->edge[k] >= s->hal.width, s->comm, PETSC_ERR_PLIB,
+               "partition: cell edge %g < ghost width %g", p->edge[k], s->hal.width);
     p->n_cells *= p->nc[k];
   }
   PetscCall(PetscCalloc1(p->n_cells, &p->owner));
   PetscCall(PetscCalloc1(p->n_cells, &p->frontier));
-  if (s->size == 1) PetscFunctionReturn(0);
+  if (s->size == 1)
+    PetscFunctionReturn(0);
   PetscCheck(p->n_cells >= s->size, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "partition: the box holds only %" PetscInt_FMT " cells of the ghost width %g m, fewer than the %d ranks; "
+             "partition: the box holds only %" PetscInt_FMT
+             " cells of the ghost width %g m, fewer than the %d ranks; "
              "run on fewer ranks",
              p->n_cells, s->hal.width, (int)s->size);
 
@@ -201,16 +216,19 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     double x[DMHS_DIM] = {ps->x[i][0], ps->x[i][1]};
     domain_wrap(&s->dom, x);
-    if (p->owner[partition_cell_of(p, x)] != s->rank) continue;
-    if (kept != i) particles_copy_row(ps, kept, i, ~0u);
+    if (p->owner[partition_cell_of(p, x)] != s->rank)
+      continue;
+    if (kept != i)
+      particles_copy_row(ps, kept, i, ~0u);
     kept++;
   }
   ps->n_owned = kept;
   PetscInt64 local = kept, total;
   PetscCallMPI(MPI_Allreduce(&local, &total, 1, MPIU_INT64, MPI_SUM, s->comm));
   PetscCheck(total == built, s->comm, PETSC_ERR_PLIB,
-             "partition: %" PetscInt64_FMT " particles built but %" PetscInt64_FMT " kept over the ranks", built,
-             total);
+             "partition: %" PetscInt64_FMT " particles built but %" PetscInt64_FMT
+             " kept over the ranks",
+             built, total);
   PetscCall(partition_measure_imbalance(p, s));
   PetscFunctionReturn(0);
 }
@@ -226,9 +244,11 @@ PetscErrorCode partition_compute(partition *p, sim *s) {
   const particles *ps = &s->ps;
   PetscInt *local, *counts = NULL;
   PetscFunctionBeginUser;
-  if (s->size == 1) PetscFunctionReturn(0);
+  if (s->size == 1)
+    PetscFunctionReturn(0);
   PetscCall(PetscCalloc1(p->n_cells, &local));
-  if (s->rank == 0) PetscCall(PetscMalloc1(p->n_cells, &counts));
+  if (s->rank == 0)
+    PetscCall(PetscMalloc1(p->n_cells, &counts));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     PetscInt work = 0;
     PetscCall(partition_particle_work(s, ps->gid[i], &work));
@@ -263,14 +283,17 @@ PetscErrorCode partition_measure_imbalance(partition *p, sim *s) {
 
 PetscErrorCode partition_check(partition *p, sim *s) {
   PetscFunctionBeginUser;
-  if (s->size == 1 || p->interval == 0 || s->step % p->interval) PetscFunctionReturn(0);
+  if (s->size == 1 || p->interval == 0 || s->step % p->interval)
+    PetscFunctionReturn(0);
   PetscCall(partition_measure_imbalance(p, s));
-  if (p->imbalance <= p->imbalance_max) PetscFunctionReturn(0);
+  if (p->imbalance <= p->imbalance_max)
+    PetscFunctionReturn(0);
   const double before = p->imbalance;
   PetscCall(partition_compute(p, s));
   if (!s->quiet)
     PetscCall(PetscPrintf(s->comm,
-                          "partition: step %" PetscInt_FMT ": imbalance %.3f > %.3f (-partition_imbalance), "
+                          "partition: step %" PetscInt_FMT
+                          ": imbalance %.3f > %.3f (-partition_imbalance), "
                           "repartitioned (edge cut %" PetscInt64_FMT ")\n",
                           s->step, before, p->imbalance_max, p->edge_cut));
   PetscFunctionReturn(0);

@@ -39,18 +39,19 @@ static const struct {
     {"angle_harmonic", angle_harmonic_module_create},
     {"repulsion", repulsion_module_create},
     {"solid_load", solid_load_module_create},
-    {"peristalsis", peristalsis_module_create}, /* intestine */
+    {"peristalsis", peristalsis_module_create},     /* intestine */
     {"agglomeration", agglomeration_module_create}, /* vein clots (issue 9) */
 };
 
-#define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))
+#define N_SCENES  (sizeof(scene_table) / sizeof(scene_table[0]))
 #define N_MODULES (sizeof(module_table) / sizeof(module_table[0]))
 
 static PetscFunctionList scene_list, module_list;
 
 PetscErrorCode registry_initialize(void) {
   PetscFunctionBeginUser;
-  if (scene_list) PetscFunctionReturn(0);
+  if (scene_list)
+    PetscFunctionReturn(0);
   for (size_t k = 0; k < N_SCENES; k++)
     PetscCall(PetscFunctionListAdd(&scene_list, scene_table[k].name, scene_table[k].create));
   for (size_t k = 0; k < N_MODULES; k++)
@@ -69,7 +70,8 @@ PetscErrorCode registry_scene_names(char *buf, size_t len) {
   PetscFunctionBeginUser;
   buf[0] = 0;
   for (size_t k = 0; k < N_SCENES; k++) {
-    if (k) PetscCall(strbuf_cat(buf, len, ", "));
+    if (k)
+      PetscCall(strbuf_cat(buf, len, ", "));
     PetscCall(strbuf_cat(buf, len, scene_table[k].name));
   }
   PetscFunctionReturn(0);
@@ -81,8 +83,8 @@ PetscErrorCode registry_create_scene(const char *name, scene **out) {
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListFind(scene_list, name, &create));
   PetscCall(registry_scene_names(names, sizeof(names)));
-  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "-scene %s: unknown scene (choose one of: %s)",
-             name, names);
+  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE,
+             "-scene %s: unknown scene (choose one of: %s)", name, names);
   PetscCall(create(out));
   PetscFunctionReturn(0);
 }
@@ -91,7 +93,8 @@ PetscErrorCode registry_create_module(const char *name, module **out) {
   PetscErrorCode (*create)(module **) = NULL;
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListFind(module_list, name, &create));
-  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "unknown physics module '%s'", name);
+  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "unknown physics module '%s'",
+             name);
   PetscCall(create(out));
   PetscFunctionReturn(0);
 }

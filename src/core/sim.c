@@ -2,7 +2,8 @@
  * pre-flight checks), the step loop and teardown.
  *
  * One step:
- *   time-step limits (check or adapt dt) -> first kick + drift -> migrate (wrap / owners) -> ghosts + pair list
+ *   time-step limits (check or adapt dt) -> first kick + drift -> migrate (wrap / owners) -> ghosts
+ * + pair list
  *   -> modules' compute (forces, density rates) -> second kick
  *   -> state check (stop before any NaN is written) -> scene diagnostics -> progress */
 #include <errno.h>
@@ -19,7 +20,8 @@
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
 
-const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_", NULL};
+const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
+                                              NULL};
 
 static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len) {
   char names[256];
@@ -29,33 +31,41 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
   PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
   PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, NULL));
-  PetscCall(PetscOptionsEnum("-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
-                             preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL, s->output_dir,
-                               s->output_dir, sizeof(s->output_dir), NULL));
-  PetscCall(PetscOptionsReal("-output_interval", "Physical time between output rows/snapshots [s] (0 = t_end/100)",
+  PetscCall(PetscOptionsEnum(
+      "-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
+      preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL,
+                               s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
+  PetscCall(PetscOptionsReal("-output_interval",
+                             "Physical time between output rows/snapshots [s] (0 = t_end/100)",
                              NULL, s->output_interval, &s->output_interval, NULL));
-  PetscCall(PetscOptionsReal("-progress_interval", "Physical time between progress lines [s] (0 = t_end/20)",
-                             NULL, s->progress_interval, &s->progress_interval, NULL));
-  PetscCall(PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
-  PetscCall(PetscOptionsReal("-neighbour_skin",
-                             "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
-                             "and pairs every step)",
-                             NULL, s->skin_ratio, &s->skin_ratio, NULL));
+  PetscCall(PetscOptionsReal("-progress_interval",
+                             "Physical time between progress lines [s] (0 = t_end/20)", NULL,
+                             s->progress_interval, &s->progress_interval, NULL));
+  PetscCall(
+      PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+  PetscCall(PetscOptionsReal(
+      "-neighbour_skin",
+      "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
+      "and pairs every step)",
+      NULL, s->skin_ratio, &s->skin_ratio, NULL));
   PetscCall(PetscOptionsBool("-dmhs_traceback",
-                             "On an error, PETSc's full traceback instead of the one-line message", NULL,
-                             traceback, &traceback, NULL));
+                             "On an error, PETSc's full traceback instead of the one-line message",
+                             NULL, traceback, &traceback, NULL));
   PetscOptionsEnd();
   PetscCall(timestep_set_from_options(s));
-  PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)", s->t_end);
+  PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)",
+             s->t_end);
   PetscCheck(s->skin_ratio >= 0 && s->skin_ratio <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
-  PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_interval must be >= 0 (got %g)",
-             s->output_interval);
+  PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-output_interval must be >= 0 (got %g)", s->output_interval);
   PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-progress_interval must be >= 0 (got %g)", s->progress_interval);
-  if (s->output_interval == 0) s->output_interval = s->t_end / 100;
-  if (s->progress_interval == 0) s->progress_interval = s->t_end / 20;
+  if (s->output_interval == 0)
+    s->output_interval = s->t_end / 100;
+  if (s->progress_interval == 0)
+    s->progress_interval = s->t_end / 20;
   PetscFunctionReturn(0);
 }
 
@@ -67,8 +77,9 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
   for (PetscInt k = 0; k < n; k++)
-    PetscCall(PetscPrintf(s->comm, "dmhs: option -%s %s was not used by scene '%s' or its modules\n", names[k],
-                          values[k] ? values[k] : "", s->scn->name));
+    PetscCall(PetscPrintf(s->comm,
+                          "dmhs: option -%s %s was not used by scene '%s' or its modules\n",
+                          names[k], values[k] ? values[k] : "", s->scn->name));
   const PetscInt n_unused = n;
   const PetscBool clean = n == 0 ? PETSC_TRUE : PETSC_FALSE;
   const char *first = n ? names[0] : "";
@@ -76,7 +87,8 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   PetscCall(PetscStrncpy(first_copy, first, sizeof(first_copy)));
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(clean, s->comm, PETSC_ERR_ARG_WRONG,
-             "unknown or unused option -%s (and %" PetscInt_FMT " more); run with -help to list the options",
+             "unknown or unused option -%s (and %" PetscInt_FMT
+             " more); run with -help to list the options",
              first_copy, n_unused - 1);
   PetscFunctionReturn(0);
 }
@@ -90,17 +102,19 @@ static PetscErrorCode sim_prepare_output_dir(sim *s) {
     /* mkdir -p: each prefix in turn */
     for (char *c = partial + 1;; c++) {
       const char saved = *c;
-      if (saved != '/' && saved != 0) continue;
+      if (saved != '/' && saved != 0)
+        continue;
       *c = 0;
       PetscCheck(mkdir(partial, 0777) == 0 || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
                  "-output_dir %s: cannot create %s: %s", s->output_dir, partial, strerror(errno));
       *c = saved;
-      if (!saved) break;
+      if (!saved)
+        break;
     }
     PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s/.dmhs-write-test", s->output_dir));
     FILE *f = fopen(probe, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir %s: not writable (%s)", s->output_dir,
-               strerror(errno));
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir %s: not writable (%s)",
+               s->output_dir, strerror(errno));
     fclose(f);
     unlink(probe);
   }
@@ -118,9 +132,11 @@ PetscErrorCode sim_enable_module(sim *s, const char *name, module **out) {
   PetscFunctionBeginUser;
   PetscCheck(s->n_modules < SIM_MAX_MODULES, s->comm, PETSC_ERR_PLIB, "too many modules");
   for (int m = 0; m < s->n_modules; m++)
-    PetscCheck(strcmp(s->modules[m]->name, name), s->comm, PETSC_ERR_PLIB, "module %s enabled twice", name);
+    PetscCheck(strcmp(s->modules[m]->name, name), s->comm, PETSC_ERR_PLIB,
+               "module %s enabled twice", name);
   PetscCall(registry_create_module(name, &s->modules[s->n_modules]));
-  if (out) *out = s->modules[s->n_modules];
+  if (out)
+    *out = s->modules[s->n_modules];
   s->n_modules++;
   PetscFunctionReturn(0);
 }
@@ -129,7 +145,8 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
   double lo[DMHS_DIM], hi[DMHS_DIM];
   PetscFunctionBeginUser;
   PetscCall(halo_build(&s->hal, &s->dom, &s->part, &s->ps)); /* mpi: + partition */
-  /* solids (issue 3): bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves out */
+  /* solids (issue 3): bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves
+   * out */
   if (s->topo) {
     PetscCall(PetscLogEventBegin(events.topology, 0, 0, 0, 0));
     PetscCall(topology_resolve(s->topo, &s->ps));
@@ -144,7 +161,8 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
     }
     PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, PetscMax(s->pair_cutoff, s->list_cutoff)));
     PetscCall(PetscLogEventEnd(events.pairs, 0, 0, 0, 0));
-    if (s->debug_halo) PetscCall(halo_check_pairs(s)); /* mpi */
+    if (s->debug_halo)
+      PetscCall(halo_check_pairs(s)); /* mpi */
   }
   PetscFunctionReturn(0);
 }
@@ -158,7 +176,8 @@ static const char *const *sim_ghost_fields(int *n) {
     const field_desc *t = fields_table(&nf);
     count = 0;
     for (size_t k = 0; k < nf && count < 32; k++)
-      if (t[k].flags & FIELD_GHOST) names[count++] = t[k].name;
+      if (t[k].flags & FIELD_GHOST)
+        names[count++] = t[k].name;
   }
   *n = count;
   return names;
@@ -174,9 +193,11 @@ static PetscErrorCode sim_needs_rebuild(sim *s, PetscBool *rebuild) {
   double local = 0, global;
   PetscFunctionBeginUser;
   *rebuild = PETSC_TRUE;
-  if (s->skin <= 0) PetscFunctionReturn(0);
+  if (s->skin <= 0)
+    PetscFunctionReturn(0);
   /* on every rank count alike, so that runs stay bitwise rank-count invariant */
-  if (s->part.interval > 0 && s->step % s->part.interval == 0) PetscFunctionReturn(0);
+  if (s->part.interval > 0 && s->step % s->part.interval == 0)
+    PetscFunctionReturn(0);
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     const double dx = ps->x[i][0] - ps->x_build[i][0], dy = ps->x[i][1] - ps->x_build[i][1];
     local = PetscMax(local, dx * dx + dy * dy);
@@ -189,7 +210,8 @@ static PetscErrorCode sim_needs_rebuild(sim *s, PetscBool *rebuild) {
 PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
   PetscBool rebuild = force;
   PetscFunctionBeginUser;
-  if (!rebuild) PetscCall(sim_needs_rebuild(s, &rebuild));
+  if (!rebuild)
+    PetscCall(sim_needs_rebuild(s, &rebuild));
   if (rebuild) {
     PetscCall(migrate_particles(s));
     PetscCall(sim_rebuild_neighbours(s));
@@ -232,7 +254,8 @@ PetscErrorCode sim_rebuild_as_last_built(sim *s) {
 PetscErrorCode sim_add_module_forces(sim *s, module_filter keep) {
   PetscFunctionBeginUser;
   for (int m = 0; m < s->n_modules; m++)
-    if (!keep || keep(s->modules[m])) PetscCall(s->modules[m]->compute(s->modules[m], s));
+    if (!keep || keep(s->modules[m]))
+      PetscCall(s->modules[m]->compute(s->modules[m], s));
   PetscFunctionReturn(0);
 }
 
@@ -260,20 +283,24 @@ static PetscErrorCode sim_view(sim *s) {
   PetscViewer v = PETSC_VIEWER_STDOUT_(s->comm);
   PetscInt n_local[PTYPE_COUNT], n[PTYPE_COUNT];
   PetscFunctionBeginUser;
-  for (int t = 0; t < PTYPE_COUNT; t++) n_local[t] = particles_count_type(&s->ps, (particle_type)t);
+  for (int t = 0; t < PTYPE_COUNT; t++)
+    n_local[t] = particles_count_type(&s->ps, (particle_type)t);
   PetscCallMPI(MPI_Allreduce(n_local, n, PTYPE_COUNT, MPIU_INT, MPI_SUM, s->comm));
-  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s: scene %s on %d rank(s)\n", DMHS_VERSION, s->scn->name, (int)s->size));
-  PetscCall(PetscViewerASCIIPrintf(v, "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT " wall, %" PetscInt_FMT
-                                      " solid; rest spacing dx = %g m\n",
+  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s: scene %s on %d rank(s)\n", DMHS_VERSION,
+                                   s->scn->name, (int)s->size));
+  PetscCall(PetscViewerASCIIPrintf(v,
+                                   "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT
+                                   " wall, %" PetscInt_FMT " solid; rest spacing dx = %g m\n",
                                    n[PTYPE_FLUID], n[PTYPE_WALL], n[PTYPE_SOLID], s->dx));
-  PetscCall(PetscViewerASCIIPrintf(v, "box: [%g, %g] x [%g, %g] m, periodic x: %s, y: %s; ghost width %g m\n",
-                                   s->dom.lo[0], s->dom.hi[0], s->dom.lo[1], s->dom.hi[1],
-                                   s->dom.periodic[0] ? "yes" : "no", s->dom.periodic[1] ? "yes" : "no",
-                                   s->hal.width));
+  PetscCall(PetscViewerASCIIPrintf(
+      v, "box: [%g, %g] x [%g, %g] m, periodic x: %s, y: %s; ghost width %g m\n", s->dom.lo[0],
+      s->dom.hi[0], s->dom.lo[1], s->dom.hi[1], s->dom.periodic[0] ? "yes" : "no",
+      s->dom.periodic[1] ? "yes" : "no", s->hal.width));
   PetscCall(PetscViewerASCIIPrintf(v, "run: t_end = %g s, output every %g s to %s/\n", s->t_end,
                                    s->output_interval, s->output_dir));
   for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->view) PetscCall(s->modules[m]->view(s->modules[m], s, v));
+    if (s->modules[m]->view)
+      PetscCall(s->modules[m]->view(s->modules[m], s, v));
   PetscFunctionReturn(0);
 }
 
@@ -317,7 +344,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   /* scene options (they set module defaults and enable modules), then modules' own */
   PetscCall(registry_create_scene(scene_name, &s->scn));
   PetscCall(s->scn->set_from_options(s->scn, s));
-  for (int m = 0; m < s->n_modules; m++) PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
+  for (int m = 0; m < s->n_modules; m++)
+    PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
   PetscCall(sim_check_unused_options(s));
 
   PetscCall(sim_prepare_output_dir(s));
@@ -326,7 +354,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   double reach = 0;
   for (int m = 0; m < s->n_modules; m++) {
     reach = PetscMax(reach, s->modules[m]->reach);
-    if (s->modules[m]->needs & MODULE_NEEDS_PAIRS) s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
+    if (s->modules[m]->needs & MODULE_NEEDS_PAIRS)
+      s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
   }
   s->skin = s->skin_ratio * reach;
   s->list_cutoff = s->pair_cutoff > 0 ? s->pair_cutoff + s->skin : 0;
@@ -334,7 +363,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(halo_create(&s->hal, reach + s->skin, s->comm));
   PetscCall(partition_setup(&s->part, s)); /* mpi: each rank keeps its share of the scene */
   for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->setup) PetscCall(s->modules[m]->setup(s->modules[m], s));
+    if (s->modules[m]->setup)
+      PetscCall(s->modules[m]->setup(s->modules[m], s));
 
   PetscCall(sim_view(s));
   PetscCall(integrate_stability_report(s));
@@ -358,7 +388,8 @@ PetscErrorCode sim_run(sim *s) {
   /* io: a restarted run already diagnosed and wrote out this state */
   if (!s->io.restarted) {
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
+    if (s->scn->diagnose)
+      PetscCall(s->scn->diagnose(s->scn, s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
     PetscCall(io_output(s));
   }
@@ -367,7 +398,8 @@ PetscErrorCode sim_run(sim *s) {
   while (s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
     PetscCall(integrate_first_half(s));
-    if (s->ts.subcycling) PetscCall(substep_solids(s)); /* the solids' sub-steps */
+    if (s->ts.subcycling)
+      PetscCall(substep_solids(s)); /* the solids' sub-steps */
     timestep_advance(s);
     PetscCall(sim_update_neighbours(s, s->force_rebuild));
     s->force_rebuild = PETSC_FALSE;
@@ -375,28 +407,33 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(integrate_second_half(s));
     PetscCall(integrate_check_state(s));
     for (int m = 0; m < s->n_modules; m++)
-      if (s->modules[m]->post_step) PetscCall(s->modules[m]->post_step(s->modules[m], s));
+      if (s->modules[m]->post_step)
+        PetscCall(s->modules[m]->post_step(s->modules[m], s));
     s->particle_steps += n_owned_global;
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    if (s->scn->diagnose) PetscCall(s->scn->diagnose(s->scn, s));
+    if (s->scn->diagnose)
+      PetscCall(s->scn->diagnose(s->scn, s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
     if (s->t >= s->next_output_t - 0.5 * s->dt) {
       PetscCall(io_output(s)); /* io: snapshot + XDMF */
       s->next_output_t += s->output_interval;
     }
     if (s->t >= s->next_progress_t - 0.5 * s->dt) {
-      if (!s->quiet) PetscCall(progress_print(s));
+      if (!s->quiet)
+        PetscCall(progress_print(s));
       s->next_progress_t += s->progress_interval;
     }
     PetscBool stop; /* io: checkpoint at the interval; on SIGTERM/SIGUSR1 also stop */
     PetscCall(io_after_step(s, &stop));
-    if (stop) break;
+    if (stop)
+      break;
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
   PetscCall(PetscLogStagePop());
-  if (s->scn->finish) PetscCall(s->scn->finish(s->scn, s));
+  if (s->scn->finish)
+    PetscCall(s->scn->finish(s->scn, s));
   PetscCall(progress_summary(s));
-  PetscCall(dump_final(s)); /* mpi */
+  PetscCall(dump_final(s));              /* mpi */
   PetscCall(migrate_report(&s->mig, s)); /* mpi */
   PetscCall(timestep_finish(s));
   PetscCall(io_finish(s)); /* io: final checkpoint, run.json */
@@ -406,13 +443,16 @@ PetscErrorCode sim_run(sim *s) {
 PetscErrorCode sim_destroy(sim **sp) {
   sim *s = *sp;
   PetscFunctionBeginUser;
-  if (!s) PetscFunctionReturn(0);
+  if (!s)
+    PetscFunctionReturn(0);
   for (int m = 0; m < s->n_modules; m++) {
-    if (s->modules[m]->destroy) PetscCall(s->modules[m]->destroy(s->modules[m]));
+    if (s->modules[m]->destroy)
+      PetscCall(s->modules[m]->destroy(s->modules[m]));
     PetscCall(PetscFree(s->modules[m]));
   }
   if (s->scn) {
-    if (s->scn->destroy) PetscCall(s->scn->destroy(s->scn));
+    if (s->scn->destroy)
+      PetscCall(s->scn->destroy(s->scn));
     PetscCall(PetscFree(s->scn));
   }
   PetscCall(io_destroy(s));

@@ -34,21 +34,28 @@ PetscErrorCode substep_solids(sim *s) {
   PetscCall(PetscLogEventBegin(events.substeps, 0, 0, 0, 0));
   /* first half kick with the whole acceleration of the last evaluation */
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID) continue;
-    for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += half * ps->a[i][k];
+    if (ps->type[i] != PTYPE_SOLID)
+      continue;
+    for (int k = 0; k < DMHS_DIM; k++)
+      ps->v[i][k] += half * ps->a[i][k];
   }
   for (PetscInt sub = 0; sub < n; sub++) {
     for (PetscInt i = 0; i < ps->n_owned; i++) {
-      if (ps->type[i] != PTYPE_SOLID) continue;
-      for (int k = 0; k < DMHS_DIM; k++) ps->x[i][k] += h * ps->v[i][k];
+      if (ps->type[i] != PTYPE_SOLID)
+        continue;
+      for (int k = 0; k < DMHS_DIM; k++)
+        ps->x[i][k] += h * ps->v[i][k];
     }
-    if (sub == n - 1) break; /* the step's force evaluation gives the last one */
+    if (sub == n - 1)
+      break; /* the step's force evaluation gives the last one */
     PetscCall(halo_forward(&s->hal, ps, positions, 1));
     PetscCall(substep_internal_forces(s));
     /* the second half kick of this sub-step and the first of the next */
     for (PetscInt i = 0; i < ps->n_owned; i++) {
-      if (ps->type[i] != PTYPE_SOLID) continue;
-      for (int k = 0; k < DMHS_DIM; k++) ps->v[i][k] += h * (ps->a_hold[i][k] + ps->a[i][k]);
+      if (ps->type[i] != PTYPE_SOLID)
+        continue;
+      for (int k = 0; k < DMHS_DIM; k++)
+        ps->v[i][k] += h * (ps->a_hold[i][k] + ps->a[i][k]);
     }
   }
   /* the liquid sees the solid's velocity predicted for the end of the step, as
@@ -56,7 +63,8 @@ PetscErrorCode substep_solids(sim *s) {
    * plus the other half with the acceleration it started from. With one
    * sub-step that is v^n + dt a^n, the plain step's. */
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID) continue;
+    if (ps->type[i] != PTYPE_SOLID)
+      continue;
     for (int k = 0; k < DMHS_DIM; k++)
       ps->v_est[i][k] = ps->v[i][k] + half * (n > 1 ? ps->a_hold[i][k] + ps->a[i][k] : ps->a[i][k]);
   }
@@ -69,9 +77,11 @@ PetscErrorCode substep_compute_forces(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(sim_compute_module_forces(s, substep_internal));
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    for (int k = 0; k < DMHS_DIM; k++) ps->a_hold[i][k] = ps->a[i][k];
+    for (int k = 0; k < DMHS_DIM; k++)
+      ps->a_hold[i][k] = ps->a[i][k];
   PetscCall(sim_add_module_forces(s, substep_external));
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    for (int k = 0; k < DMHS_DIM; k++) ps->a_hold[i][k] = ps->a[i][k] - ps->a_hold[i][k];
+    for (int k = 0; k < DMHS_DIM; k++)
+      ps->a_hold[i][k] = ps->a[i][k] - ps->a_hold[i][k];
   PetscFunctionReturn(0);
 }

@@ -132,7 +132,8 @@ static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
   }
   const double n = ceil(s->dt / (ts->safety * inner) * (1.0 - 1e-12));
   PetscCheck(n <= SUBSTEPS_MAX, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "step %" PetscInt_FMT ": -solid_substeps 0 would need %g sub-steps of dt = %g s for the "
+             "step %" PetscInt_FMT
+             ": -solid_substeps 0 would need %g sub-steps of dt = %g s for the "
              "%s limit %g s (at most %d): lower -dt",
              s->step, n, s->dt, l->item[which].name, inner, SUBSTEPS_MAX);
   ts->n_sub = n < 1 ? 1 : (PetscInt)n;
@@ -189,8 +190,8 @@ static PetscErrorCode timestep_csv_row(sim *s) {
     PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s,%" PetscInt_FMT "\n",
                       s->step, s->t, s->dt, ts->binding, ts->n_sub));
   else
-    PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t,
-                      s->dt, ts->binding));
+    PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t, s->dt,
+                      ts->binding));
   PetscFunctionReturn(0);
 }
 
@@ -218,7 +219,8 @@ static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
       continue;
     const char *what = dt < s->dt ? "dt/substeps" : "dt";
     PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "step %" PetscInt_FMT ", t = %g s: %s = %g s exceeds the %s limit %g s (%s) that the "
+               "step %" PetscInt_FMT
+               ", t = %g s: %s = %g s exceeds the %s limit %g s (%s) that the "
                "state now sets; lower -dt, use -dt 0 (automatic), or -preflight warn to run on",
                s->step, s->t, what, dt, it->name, it->value, it->formula);
     if (!ts->warned)

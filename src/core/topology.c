@@ -22,7 +22,8 @@ PetscErrorCode topology_create(topology **t) {
 PetscErrorCode topology_destroy(topology **tp) {
   topology *t = *tp;
   PetscFunctionBeginUser;
-  if (!t) PetscFunctionReturn(0);
+  if (!t)
+    PetscFunctionReturn(0);
   PetscCall(PetscFree3(t->bond_gid, t->bond_type, t->bond_r0));
   PetscCall(PetscFree2(t->angle_gid, t->angle_type));
   PetscCall(PetscFree(t->gids));
@@ -41,14 +42,16 @@ PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, Pets
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type, double r0) {
+PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type,
+                                    double r0) {
   PetscFunctionBeginUser;
   PetscCheck(r0 >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": rest length %g m < 0", gi, gj, r0);
-  PetscCheck(gi != gj, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "bond from particle gid %" PetscInt64_FMT " to itself", gi);
+  PetscCheck(gi != gj, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "bond from particle gid %" PetscInt64_FMT " to itself", gi);
   PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": type %" PetscInt_FMT " outside [0, %d)", gi, gj, type,
-             TOPOLOGY_MAX_TYPES);
+             "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": type %" PetscInt_FMT " outside [0, %d)",
+             gi, gj, type, TOPOLOGY_MAX_TYPES);
   if (t->n_bonds == t->n_alloc_bonds) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_bonds);
     PetscInt64(*g)[2];
@@ -71,18 +74,21 @@ PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, P
   t->bond_type[t->n_bonds] = type;
   t->bond_r0[t->n_bonds] = r0;
   t->n_bonds++;
-  if (type != t->runtime_type) t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
+  if (type != t->runtime_type)
+    t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
   t->dirty = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk, PetscInt type) {
+PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk,
+                                  PetscInt type) {
   PetscFunctionBeginUser;
   PetscCheck(gi != gj && gj != gk && gi != gk, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
-             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT " repeats a particle", gi, gj, gk);
+             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT " repeats a particle",
+             gi, gj, gk);
   PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT ": type %" PetscInt_FMT
-             " outside [0, %d)",
+             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT
+             ": type %" PetscInt_FMT " outside [0, %d)",
              gi, gj, gk, type, TOPOLOGY_MAX_TYPES);
   if (t->n_angles == t->n_alloc_angles) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_angles);
@@ -118,8 +124,10 @@ static PetscInt topology_slot_of(const topology *t, PetscInt64 g) {
   PetscInt lo = 0, hi = t->n_gids;
   while (lo < hi) {
     const PetscInt mid = (lo + hi) / 2;
-    if (t->gids[mid] < g) lo = mid + 1;
-    else hi = mid;
+    if (t->gids[mid] < g)
+      lo = mid + 1;
+    else
+      hi = mid;
   }
   return lo < t->n_gids && t->gids[lo] == g ? lo : -1;
 }
@@ -139,21 +147,23 @@ static PetscErrorCode topology_build_tables(topology *t) {
     all[n_all++] = t->bond_gid[b][1];
   }
   for (PetscInt a = 0; a < t->n_angles; a++)
-    for (int k = 0; k < 3; k++) all[n_all++] = t->angle_gid[a][k];
+    for (int k = 0; k < 3; k++)
+      all[n_all++] = t->angle_gid[a][k];
   qsort(all, (size_t)n_all, sizeof(PetscInt64), cmp_int64);
   PetscInt n_unique = 0;
   for (PetscInt k = 0; k < n_all; k++)
-    if (!n_unique || all[k] != all[n_unique - 1]) all[n_unique++] = all[k];
+    if (!n_unique || all[k] != all[n_unique - 1])
+      all[n_unique++] = all[k];
   t->gids = all;
   t->n_gids = n_unique;
 
   /* directed exclusion pairs (a, b), sorted, unique */
   PetscCall(PetscMalloc1(2 * t->n_bonds + 6 * t->n_angles + 1, &pairs));
-#define PUSH(a, b)                                                                                                    \
-  do {                                                                                                                \
-    pairs[n_pairs][0] = (a);                                                                                          \
-    pairs[n_pairs][1] = (b);                                                                                          \
-    n_pairs++;                                                                                                        \
+#define PUSH(a, b)                                                                                 \
+  do {                                                                                             \
+    pairs[n_pairs][0] = (a);                                                                       \
+    pairs[n_pairs][1] = (b);                                                                       \
+    n_pairs++;                                                                                     \
   } while (0)
   for (PetscInt b = 0; b < t->n_bonds; b++) {
     PUSH(t->bond_gid[b][0], t->bond_gid[b][1]);
@@ -162,18 +172,22 @@ static PetscErrorCode topology_build_tables(topology *t) {
   for (PetscInt a = 0; a < t->n_angles; a++)
     for (int p = 0; p < 3; p++)
       for (int q = 0; q < 3; q++)
-        if (p != q) PUSH(t->angle_gid[a][p], t->angle_gid[a][q]);
+        if (p != q)
+          PUSH(t->angle_gid[a][p], t->angle_gid[a][q]);
 #undef PUSH
   qsort(pairs, (size_t)n_pairs, sizeof(pairs[0]), cmp_int64); /* by the first member only */
   /* then each run of equal first members by the second */
   for (PetscInt k = 0; k < n_pairs;) {
     PetscInt e = k;
-    while (e < n_pairs && pairs[e][0] == pairs[k][0]) e++;
+    while (e < n_pairs && pairs[e][0] == pairs[k][0])
+      e++;
     PetscInt64 *second;
     PetscCall(PetscMalloc1(e - k, &second));
-    for (PetscInt q = k; q < e; q++) second[q - k] = pairs[q][1];
+    for (PetscInt q = k; q < e; q++)
+      second[q - k] = pairs[q][1];
     qsort(second, (size_t)(e - k), sizeof(PetscInt64), cmp_int64);
-    for (PetscInt q = k; q < e; q++) pairs[q][1] = second[q - k];
+    for (PetscInt q = k; q < e; q++)
+      pairs[q][1] = second[q - k];
     PetscCall(PetscFree(second));
     k = e;
   }
@@ -181,18 +195,22 @@ static PetscErrorCode topology_build_tables(topology *t) {
   PetscInt n_ex = 0, s = 0;
   t->ex_start[0] = 0;
   for (PetscInt k = 0; k < n_pairs; k++) {
-    if (k && pairs[k][0] == pairs[k - 1][0] && pairs[k][1] == pairs[k - 1][1]) continue;
-    while (t->gids[s] != pairs[k][0]) t->ex_start[++s] = n_ex; /* gids and pairs share the sorted first column */
+    if (k && pairs[k][0] == pairs[k - 1][0] && pairs[k][1] == pairs[k - 1][1])
+      continue;
+    while (t->gids[s] != pairs[k][0])
+      t->ex_start[++s] = n_ex; /* gids and pairs share the sorted first column */
     t->ex_gid[n_ex++] = pairs[k][1];
   }
-  while (s < n_unique) t->ex_start[++s] = n_ex;
+  while (s < n_unique)
+    t->ex_start[++s] = n_ex;
   PetscCall(PetscFree(pairs));
   PetscCall(PetscMalloc2(n_unique, &t->head, n_unique, &t->owned));
   t->dirty = PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode topology_push_bond(topology *t, PetscInt i, PetscInt j, PetscInt type, double w, PetscInt64 b) {
+static PetscErrorCode topology_push_bond(topology *t, PetscInt i, PetscInt j, PetscInt type,
+                                         double w, PetscInt64 b) {
   PetscFunctionBeginUser;
   if (t->n_bond_local == t->n_alloc_bond_local) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_bond_local);
@@ -222,7 +240,8 @@ static PetscErrorCode topology_push_bond(topology *t, PetscInt i, PetscInt j, Pe
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode topology_push_angle(topology *t, const PetscInt r[3], PetscInt type, double w) {
+static PetscErrorCode topology_push_angle(topology *t, const PetscInt r[3], PetscInt type,
+                                          double w) {
   PetscFunctionBeginUser;
   if (t->n_angle_local == t->n_alloc_angle_local) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_angle_local);
@@ -240,7 +259,8 @@ static PetscErrorCode topology_push_angle(topology *t, const PetscInt r[3], Pets
     t->angle_weight = wt;
     t->n_alloc_angle_local = grown;
   }
-  for (int k = 0; k < 3; k++) t->angle[t->n_angle_local][k] = r[k];
+  for (int k = 0; k < 3; k++)
+    t->angle[t->n_angle_local][k] = r[k];
   t->angle_ltype[t->n_angle_local] = type;
   t->angle_weight[t->n_angle_local] = w;
   t->n_angle_local++;
@@ -249,7 +269,8 @@ static PetscErrorCode topology_push_angle(topology *t, const PetscInt r[3], Pets
 
 /* The row holding gid slot s that is nearest to position x (minimum image
  * among copies), or -1 when this rank holds no copy. */
-static PetscInt topology_nearest(const topology *t, const particles *ps, PetscInt s, const double x[DMHS_DIM]) {
+static PetscInt topology_nearest(const topology *t, const particles *ps, PetscInt s,
+                                 const double x[DMHS_DIM]) {
   PetscInt best = -1;
   double best_d2 = INFINITY;
   for (PetscInt r = t->head[s]; r >= 0; r = t->next[r]) {
@@ -264,12 +285,15 @@ static PetscInt topology_nearest(const topology *t, const particles *ps, PetscIn
 
 PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot) {
   PetscFunctionBeginUser;
-  if (t->dirty) PetscCall(topology_build_tables(t));
+  if (t->dirty)
+    PetscCall(topology_build_tables(t));
   PetscInt lo = 0, hi = t->n_gids;
   while (lo < hi) {
     const PetscInt mid = (lo + hi) / 2;
-    if (t->gids[mid] < gid) lo = mid + 1;
-    else hi = mid;
+    if (t->gids[mid] < gid)
+      lo = mid + 1;
+    else
+      hi = mid;
   }
   *slot = lo < t->n_gids && t->gids[lo] == gid ? lo : -1;
   PetscFunctionReturn(0);
@@ -286,37 +310,44 @@ PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *cou
 PetscErrorCode topology_resolve(topology *t, const particles *ps) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
-  if (t->dirty) PetscCall(topology_build_tables(t));
+  if (t->dirty)
+    PetscCall(topology_build_tables(t));
   if (n > t->n_alloc_rows) {
     PetscCall(PetscFree2(t->next, t->slot));
     t->n_alloc_rows = n + n / 4 + 16;
     PetscCall(PetscMalloc2(t->n_alloc_rows, &t->next, t->n_alloc_rows, &t->slot));
   }
-  for (PetscInt s = 0; s < t->n_gids; s++) t->head[s] = t->owned[s] = -1;
+  for (PetscInt s = 0; s < t->n_gids; s++)
+    t->head[s] = t->owned[s] = -1;
   /* gid -> rows: owned rows first, then ghosts (rows are visited in reverse so
    * each chain lists rows in increasing order: the owned copy heads it) */
   for (PetscInt r = n - 1; r >= 0; r--) {
     t->slot[r] = -1;
     t->next[r] = -1;
-    if (ps->type[r] == PTYPE_FLUID) continue; /* bonded particles are solids, walls or clot particles */
+    if (ps->type[r] == PTYPE_FLUID)
+      continue; /* bonded particles are solids, walls or clot particles */
     const PetscInt s = topology_slot_of(t, ps->gid[r]);
-    if (s < 0) continue;
+    if (s < 0)
+      continue;
     t->slot[r] = s;
     t->next[r] = t->head[s];
     t->head[s] = r;
-    if (r < ps->n_owned) t->owned[s] = r;
+    if (r < ps->n_owned)
+      t->owned[s] = r;
   }
 
   t->n_bond_local = 0;
   for (PetscInt b = 0; b < t->n_bonds; b++) {
-    const PetscInt sa = topology_slot_of(t, t->bond_gid[b][0]), sb = topology_slot_of(t, t->bond_gid[b][1]);
+    const PetscInt sa = topology_slot_of(t, t->bond_gid[b][0]),
+                   sb = topology_slot_of(t, t->bond_gid[b][1]);
     const PetscInt oa = t->owned[sa], ob = t->owned[sb];
     PetscBool b_done = PETSC_FALSE;
     if (oa >= 0) {
       const PetscInt rb = topology_nearest(t, ps, sb, ps->x[oa]);
       PetscCheck(rb >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": partner gid %" PetscInt64_FMT
-                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the ghost width?)",
+                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the "
+                 "ghost width?)",
                  t->bond_gid[b][0], t->bond_gid[b][1], t->bond_gid[b][1]);
       b_done = rb == ob ? PETSC_TRUE : PETSC_FALSE;
       PetscCall(topology_push_bond(t, oa, rb, t->bond_type[b], b_done ? 1.0 : 0.5, b));
@@ -325,7 +356,8 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
       const PetscInt ra = topology_nearest(t, ps, sa, ps->x[ob]);
       PetscCheck(ra >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": partner gid %" PetscInt64_FMT
-                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the ghost width?)",
+                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the "
+                 "ghost width?)",
                  t->bond_gid[b][0], t->bond_gid[b][1], t->bond_gid[b][0]);
       PetscCall(topology_push_bond(t, ra, ob, t->bond_type[b], ra == oa ? 1.0 : 0.5, b));
     }
@@ -341,20 +373,24 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
       done[k] = o[k] < 0 ? PETSC_TRUE : PETSC_FALSE; /* only owned ends need their force here */
     }
     for (int anchor = 0; anchor < 3; anchor++) {
-      if (done[anchor]) continue;
+      if (done[anchor])
+        continue;
       PetscInt r[3] = {-1, -1, -1};
       r[anchor] = o[anchor];
       /* from the anchor through the centre (1) to the far end */
-      if (anchor != 1) r[1] = topology_nearest(t, ps, s[1], ps->x[r[anchor]]);
+      if (anchor != 1)
+        r[1] = topology_nearest(t, ps, s[1], ps->x[r[anchor]]);
       for (int k = 0; k < 3; k += 2)
-        if (k != anchor && r[1] >= 0) r[k] = topology_nearest(t, ps, s[k], ps->x[r[1]]);
+        if (k != anchor && r[1] >= 0)
+          r[k] = topology_nearest(t, ps, s[k], ps->x[r[1]]);
       for (int k = 0; k < 3; k++)
         PetscCheck(r[1] >= 0 && r[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                   "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT ": particle gid %" PetscInt64_FMT
+                   "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT
+                   ": particle gid %" PetscInt64_FMT
                    " (owned here) has partner gid %" PetscInt64_FMT
                    " neither owned nor a ghost here (is it farther than the ghost width?)",
-                   t->angle_gid[a][0], t->angle_gid[a][1], t->angle_gid[a][2], t->angle_gid[a][anchor],
-                   t->angle_gid[a][r[1] >= 0 ? k : 1]);
+                   t->angle_gid[a][0], t->angle_gid[a][1], t->angle_gid[a][2],
+                   t->angle_gid[a][anchor], t->angle_gid[a][r[1] >= 0 ? k : 1]);
       int n_owned_rows = 0;
       for (int k = 0; k < 3; k++)
         if (r[k] < ps->n_owned) {
@@ -371,16 +407,21 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
 PetscErrorCode topology_enable(sim *s) {
   bond_style style = BOND_HARMONIC;
   PetscFunctionBeginUser;
-  if (!s->topo) PetscCall(topology_create(&s->topo));
+  if (!s->topo)
+    PetscCall(topology_create(&s->topo));
   PetscOptionsBegin(s->comm, NULL, "Solids: bonds, angles and exclusions", NULL);
-  PetscCall(PetscOptionsEnum("-bond_style", "Bond potential: harmonic K (r-r0)^2 or nonlinear k_b (r-r0)^2/(r_max^2-(r-r0)^2)",
-                             NULL, bond_style_names, (PetscEnum)style, (PetscEnum *)&style, NULL));
-  PetscCall(PetscOptionsBool("-special_bonds_include",
-                             "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
-                             "LAMMPS special_bonds 0 0 0)",
-                             NULL, s->topo->special_include, &s->topo->special_include, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-bond_style",
+      "Bond potential: harmonic K (r-r0)^2 or nonlinear k_b (r-r0)^2/(r_max^2-(r-r0)^2)", NULL,
+      bond_style_names, (PetscEnum)style, (PetscEnum *)&style, NULL));
+  PetscCall(PetscOptionsBool(
+      "-special_bonds_include",
+      "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
+      "LAMMPS special_bonds 0 0 0)",
+      NULL, s->topo->special_include, &s->topo->special_include, NULL));
   PetscOptionsEnd();
-  PetscCall(sim_enable_module(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
+  PetscCall(
+      sim_enable_module(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
   PetscCall(sim_enable_module(s, "angle_harmonic", NULL));
   PetscFunctionReturn(0);
 }

@@ -14,8 +14,10 @@ double analytic_poiseuille(double y, double t, double F, double nu, double l) {
   double sum = 0.0;
   for (int n = 0; n < ANALYTIC_MAX_TERMS; n++) {
     const double k = 2.0 * n + 1.0;
-    const double bound = 4.0 * F * l * l / (nu * M_PI * M_PI * M_PI * k * k * k) * exp(-k * k * decay);
-    if (bound < 1e-16 * fabs(peak)) break;
+    const double bound =
+        4.0 * F * l * l / (nu * M_PI * M_PI * M_PI * k * k * k) * exp(-k * k * decay);
+    if (bound < 1e-16 * fabs(peak))
+      break;
     sum += bound * sin(k * M_PI * y / l);
   }
   return F / (2.0 * nu) * y * (l - y) - sum;
@@ -26,7 +28,8 @@ double analytic_couette(double y, double t, double V, double nu, double l) {
   double sum = 0.0;
   for (int n = 1; n < ANALYTIC_MAX_TERMS; n++) {
     const double bound = 2.0 * V / (n * M_PI) * exp(-(double)n * n * decay);
-    if (fabs(bound) < 1e-16 * fabs(V)) break;
+    if (fabs(bound) < 1e-16 * fabs(V))
+      break;
     sum += bound * ((n & 1) ? -1.0 : 1.0) * sin(n * M_PI * y / l);
   }
   return V * y / l + sum;
@@ -43,7 +46,8 @@ double analytic_couette(double y, double t, double V, double nu, double l) {
  * so v_x = g0 [sin(wt) P - w cos(wt) Q + w sum c_n cos(lam_n s) r_n]. Once exp(-beta_n t)
  * is small, r_n falls as beta_n^-3: ~170 terms at a sqrt(w/nu) = 2.76 (~1400 at t = 0). */
 double analytic_womersley(double y, double t, double g0, double w, double nu, double l) {
-  if (t <= 0) return 0.0; /* at rest until the drive starts */
+  if (t <= 0)
+    return 0.0; /* at rest until the drive starts */
   const double a = 0.5 * l, s = y - a, a2 = a * a, s2 = s * s, w2 = w * w;
   const double P = (a2 - s2) / (2.0 * nu), Q = (a2 - s2) * (5.0 * a2 - s2) / (24.0 * nu * nu);
   const double sn = sin(w * t), cs = cos(w * t), scale = 1.0 / w; /* of v_x/g0 */
@@ -52,7 +56,8 @@ double analytic_womersley(double y, double t, double g0, double w, double nu, do
     const double k = 2.0 * n + 1.0, lam = k * M_PI / l, beta = nu * lam * lam;
     const double c = ((n & 1) ? -4.0 : 4.0) / (k * M_PI), d = beta * beta + w2, e = exp(-beta * t);
     const double bound = fabs(c) * w * (e + w / beta + w2 / (beta * beta)) / d;
-    if (bound < 1e-16 * scale) break;
+    if (bound < 1e-16 * scale)
+      break;
     const double r = (e - w * sn / beta) / d + w2 * cs / (beta * beta * d);
     sum += c * cos(lam * s) * r;
   }

@@ -19,14 +19,17 @@ PetscErrorCode errors_set_from_options(errors *e, sim *s) {
     e->n_reports = 3;
   }
   PetscOptionsBegin(s->comm, NULL, "Error against the series solution", NULL);
-  PetscCall(PetscOptionsRealArray("-error_report_times", "Times at which errors and profiles are reported [s]",
-                                  NULL, e->report_t, &n, &set));
+  PetscCall(PetscOptionsRealArray("-error_report_times",
+                                  "Times at which errors and profiles are reported [s]", NULL,
+                                  e->report_t, &n, &set));
   PetscOptionsEnd();
-  if (set) e->n_reports = n;
+  if (set)
+    e->n_reports = n;
   for (PetscInt k = 0; k < e->n_reports; k++)
     PetscCheck(e->report_t[k] > 0 && (k == 0 || e->report_t[k] > e->report_t[k - 1]), s->comm,
-               PETSC_ERR_ARG_OUTOFRANGE, "-error_report_times must be positive and increasing (entry %d = %g)",
-               (int)k, e->report_t[k]);
+               PETSC_ERR_ARG_OUTOFRANGE,
+               "-error_report_times must be positive and increasing (entry %d = %g)", (int)k,
+               e->report_t[k]);
   PetscFunctionReturn(0);
 }
 
@@ -39,7 +42,8 @@ static PetscErrorCode errors_profile_path(const sim *s, double t, char *path, si
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx, double v_ref) {
+PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx,
+                            double v_ref) {
   char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   PetscCheck(v_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -53,10 +57,11 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
     const PetscBool append = s->io.restart_file[0] ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
     e->csv = fopen(path, append ? "a" : "w");
-    PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
+               strerror(errno));
     if (!append) {
-      PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-                 "cannot write %s", path);
+      PetscCheck(fprintf(e->csv, "step,t,wall_s,l2,linf\n") > 0, PETSC_COMM_SELF,
+                 PETSC_ERR_FILE_WRITE, "cannot write %s", path);
       /* profiles of an earlier run in this directory would pass for this run's */
       for (PetscInt k = 0; k < e->n_reports; k++) {
         PetscCall(errors_profile_path(s, e->report_t[k], path, sizeof(path)));
@@ -72,7 +77,8 @@ PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
   double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (ps->type[i] != PTYPE_FLUID)
+      continue;
     const double d = (ps->v[i][0] - e->exact(ps->x[i][1], s->t, e->ctx)) / e->v_ref;
     local[0] += d * d;
     local[1] += 1.0;
@@ -110,7 +116,8 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
     }
   PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &n_all));
   PetscCall(PetscFree(mine));
-  if (s->rank != 0) PetscFunctionReturn(0);
+  if (s->rank != 0)
+    PetscFunctionReturn(0);
   qsort(all, n_all / 4, 4 * sizeof(double), errors_compare_gid);
   PetscCall(errors_profile_path(s, t_report, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
@@ -122,23 +129,27 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   ok = (fclose(f) == 0) && ok;
   PetscCall(PetscFree(all));
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
-             path, strerror(errno));
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode errors_on_step(errors *e, sim *s) {
   const double half = 0.5 * s->dt;
-  const PetscBool output_step = s->step > 0 && s->t >= s->next_output_t - half ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool output_step =
+      s->step > 0 && s->t >= s->next_output_t - half ? PETSC_TRUE : PETSC_FALSE;
   const PetscBool report_step =
-      e->next_report < e->n_reports && s->t >= e->report_t[e->next_report] - half ? PETSC_TRUE : PETSC_FALSE;
+      e->next_report < e->n_reports && s->t >= e->report_t[e->next_report] - half ? PETSC_TRUE
+                                                                                  : PETSC_FALSE;
   double l2, linf;
   PetscFunctionBeginUser;
-  if (!output_step && !report_step) PetscFunctionReturn(0);
+  if (!output_step && !report_step)
+    PetscFunctionReturn(0);
   PetscCall(errors_compute(e, s, &l2, &linf));
   const double wall = s->step > 0 ? MPI_Wtime() - s->loop_start_wtime : 0.0;
   if (output_step && s->rank == 0) {
-    PetscCheck(fprintf(e->csv, "%" PetscInt_FMT ",%.9g,%.6g,%.6e,%.6e\n", s->step, s->t, wall, l2, linf) > 0 &&
+    PetscCheck(fprintf(e->csv, "%" PetscInt_FMT ",%.9g,%.6g,%.6e,%.6e\n", s->step, s->t, wall, l2,
+                       linf) > 0 &&
                    fflush(e->csv) == 0,
                PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing error.csv failed (disk full?)");
   }
@@ -155,13 +166,16 @@ PetscErrorCode errors_on_step(errors *e, sim *s) {
 
 PetscErrorCode errors_report(errors *e, sim *s) {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(s->comm, "Error of v_x against the series solution (normalised by %.4g m/s):\n", e->v_ref));
-  PetscCall(PetscPrintf(s->comm, "  %10s  %12s  %12s  %10s\n", "t [s]", "L2 (RMS)", "Linf", "wall [s]"));
+  PetscCall(PetscPrintf(
+      s->comm, "Error of v_x against the series solution (normalised by %.4g m/s):\n", e->v_ref));
+  PetscCall(
+      PetscPrintf(s->comm, "  %10s  %12s  %12s  %10s\n", "t [s]", "L2 (RMS)", "Linf", "wall [s]"));
   for (PetscInt k = 0; k < e->next_report; k++)
-    PetscCall(PetscPrintf(s->comm, "  %10.4g  %11.4f%%  %11.4f%%  %10.3f\n", e->reached_t[k], 100 * e->l2[k],
-                          100 * e->linf[k], e->wall_s[k]));
+    PetscCall(PetscPrintf(s->comm, "  %10.4g  %11.4f%%  %11.4f%%  %10.3f\n", e->reached_t[k],
+                          100 * e->l2[k], 100 * e->linf[k], e->wall_s[k]));
   for (PetscInt k = e->next_report; k < e->n_reports; k++)
-    PetscCall(PetscPrintf(s->comm, "  %10.4g  (not reached: t_end = %g s)\n", e->report_t[k], s->t_end));
+    PetscCall(
+        PetscPrintf(s->comm, "  %10.4g  (not reached: t_end = %g s)\n", e->report_t[k], s->t_end));
   PetscCall(PetscPrintf(s->comm, "  wall-clock of the step loop: %.3f s\n", s->loop_seconds));
   PetscFunctionReturn(0);
 }
@@ -187,23 +201,28 @@ static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
   PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing %s failed", path);
   e->csv = NULL;
   FILE *in = fopen(path, "r"), *out = fopen(tmp, "w");
-  PetscCheck(in && out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot rewrite %s: %s", path, strerror(errno));
+  PetscCheck(in && out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot rewrite %s: %s", path,
+             strerror(errno));
   int ok = 1, first = 1;
   while (ok && fgets(line, sizeof(line), in)) {
     long long step;
     const int keep = first ? 1 : sscanf(line, "%lld,", &step) == 1 && step <= (long long)s->step;
-    if (first && strncmp(line, "step,", 5)) ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
-    if (keep) ok = ok && fputs(line, out) >= 0;
+    if (first && strncmp(line, "step,", 5))
+      ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
+    if (keep)
+      ok = ok && fputs(line, out) >= 0;
     first = 0;
   }
-  if (first) ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
+  if (first)
+    ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
   fclose(in);
   ok = (fclose(out) == 0) && ok;
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp,
-             path, strerror(errno));
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
   e->csv = fopen(path, "a");
-  PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+  PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
+             strerror(errno));
   PetscFunctionReturn(0);
 }
 
@@ -212,7 +231,8 @@ PetscErrorCode errors_checkpoint_read(errors *e, sim *s, checkpoint_io *io) {
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_ints(io, "errors_next_report", &next, 1));
   PetscCheck(next >= 0 && next <= e->n_reports, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-             "the checkpoint has %" PetscInt64_FMT " error reports done but -error_report_times lists %" PetscInt_FMT
+             "the checkpoint has %" PetscInt64_FMT
+             " error reports done but -error_report_times lists %" PetscInt_FMT
              ": restart with the same -error_report_times",
              next, e->n_reports);
   e->next_report = (PetscInt)next;
@@ -220,14 +240,16 @@ PetscErrorCode errors_checkpoint_read(errors *e, sim *s, checkpoint_io *io) {
   PetscCall(checkpoint_get_reals(io, "errors_l2", e->l2, e->next_report));
   PetscCall(checkpoint_get_reals(io, "errors_linf", e->linf, e->next_report));
   PetscCall(checkpoint_get_reals(io, "errors_wall_s", e->wall_s, e->next_report));
-  if (s->rank == 0) PetscCall(errors_csv_truncate(e, s));
+  if (s->rank == 0)
+    PetscCall(errors_csv_truncate(e, s));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode errors_destroy(errors *e) {
   PetscFunctionBeginUser;
   if (e->csv) {
-    PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing error.csv failed");
+    PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "closing error.csv failed");
     e->csv = NULL;
   }
   PetscFunctionReturn(0);

@@ -7,7 +7,8 @@ PetscErrorCode liquid_state_bounds(sim *s, double *rho_dev, double *mach) {
   double buf[2] = {0, 0};
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID) continue;
+    if (ps->type[i] != PTYPE_FLUID)
+      continue;
     buf[0] = PetscMax(buf[0], fabs(ps->rho[i] / s->sph.rho0 - 1.0));
     buf[1] = PetscMax(buf[1], hypot(ps->v[i][0], ps->v[i][1]) / s->sph.c0);
   }

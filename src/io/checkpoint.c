@@ -173,7 +173,8 @@ static field_desc checkpoint_array_desc(const char *name, field_kind kind) {
   return d;
 }
 
-PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v, PetscInt n) {
+PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v,
+                                    PetscInt n) {
   const field_desc d = checkpoint_array_desc(name, FIELD_REAL);
   PetscFunctionBeginUser;
   /* replicated state: rank 0's copy is written */
@@ -182,7 +183,8 @@ PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const d
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v, PetscInt n) {
+PetscErrorCode checkpoint_put_ints(checkpoint_io *io, const char *name, const PetscInt64 *v,
+                                   PetscInt n) {
   const field_desc d = checkpoint_array_desc(name, FIELD_INT64);
   PetscFunctionBeginUser;
   PetscCall(
@@ -197,7 +199,8 @@ PetscErrorCode checkpoint_get_length(checkpoint_io *io, const char *name, PetscI
   PetscFunctionBeginUser;
   PetscCallHDF5(io->path, exists = H5Lexists(io->group, name, H5P_DEFAULT));
   *n = -1;
-  if (exists <= 0) PetscFunctionReturn(0);
+  if (exists <= 0)
+    PetscFunctionReturn(0);
   PetscCallHDF5(io->path, dset = H5Dopen2(io->group, name, H5P_DEFAULT));
   PetscCallHDF5(io->path, space = H5Dget_space(dset));
   PetscCallHDF5(io->path, count = H5Sget_simple_extent_npoints(space));
@@ -207,16 +210,18 @@ PetscErrorCode checkpoint_get_length(checkpoint_io *io, const char *name, PetscI
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode checkpoint_get(checkpoint_io *io, const char *name, field_kind kind, void *v, PetscInt n) {
+static PetscErrorCode checkpoint_get(checkpoint_io *io, const char *name, field_kind kind, void *v,
+                                     PetscInt n) {
   const field_desc d = checkpoint_array_desc(name, kind);
   PetscInt stored;
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_length(io, name, &stored));
   PetscCheck(stored >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s lacks '%s' of %s (truncated, or written by another version)", io->path, name, io->owner);
+             "checkpoint %s lacks '%s' of %s (truncated, or written by another version)", io->path,
+             name, io->owner);
   PetscCheck(stored == n, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s: '%s' of %s has %" PetscInt_FMT " values, expected %" PetscInt_FMT, io->path, name,
-             io->owner, stored, n);
+             "checkpoint %s: '%s' of %s has %" PetscInt_FMT " values, expected %" PetscInt_FMT,
+             io->path, name, io->owner, stored, n);
   PetscCall(
       checkpoint_read_rows(io->comm, io->path, io->group, io->where, &d, v, n, 0, n, PETSC_FALSE));
   PetscFunctionReturn(0);
@@ -273,7 +278,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   }
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
-    if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
+    if (!(t[k].flags & FIELD_CHECKPOINT))
+      continue;
     PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]),
                                     s->ps.n_owned, offset, n));
   }
@@ -285,10 +291,12 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   for (int m = 0; m < s->n_modules; m++) {
     module *mod = s->modules[m];
     char owner[80];
-    if (!mod->checkpoint_write) continue;
+    if (!mod->checkpoint_write)
+      continue;
     PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
     io.owner = owner;
-    PetscCallHDF5(tmp, io.group = H5Gcreate2(grp, mod->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCallHDF5(tmp,
+                  io.group = H5Gcreate2(grp, mod->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
     PetscCall(mod->checkpoint_write(mod, s, &io));
     PetscCallHDF5(tmp, H5Gclose(io.group));
   }
@@ -306,14 +314,15 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
 }
 
 /* Opens group `name` under loc, or fails naming what is missing. */
-static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const char *name, const char *what,
-                                            hid_t *grp) {
+static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const char *name,
+                                            const char *what, hid_t *grp) {
   htri_t exists;
   PetscFunctionBeginUser;
   PetscCallHDF5(path, exists = H5Lexists(loc, name, H5P_DEFAULT));
-  PetscCheck(exists > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s lacks the group '%s' (%s): truncated, or written by another scene or version", path, name,
-             what);
+  PetscCheck(
+      exists > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+      "checkpoint %s lacks the group '%s' (%s): truncated, or written by another scene or version",
+      path, name, what);
   PetscCallHDF5(path, *grp = H5Gopen2(loc, name, H5P_DEFAULT));
   PetscFunctionReturn(0);
 }
@@ -364,18 +373,22 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   /* is it ours, and of this format? */
   PetscCall(h5io_has_attr(path, fid, "magic", &has));
   PetscCheck(has, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart %s: not a dmhs checkpoint (an HDF5 file without the 'magic' attribute)", path);
+             "-restart %s: not a dmhs checkpoint (an HDF5 file without the 'magic' attribute)",
+             path);
   PetscCall(h5io_get_string(path, fid, "magic", text, sizeof(text)));
   PetscCheck(!strcmp(text, CHECKPOINT_MAGIC), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart %s: not a dmhs checkpoint (magic '%s', expected '%s')", path, text, CHECKPOINT_MAGIC);
+             "-restart %s: not a dmhs checkpoint (magic '%s', expected '%s')", path, text,
+             CHECKPOINT_MAGIC);
   PetscCall(h5io_get_int64s(path, fid, "format_version", &version, 1));
   PetscCall(h5io_get_string(path, fid, "dmhs_version", text, sizeof(text)));
   PetscCheck(version == CHECKPOINT_FORMAT_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart %s: checkpoint format version %" PetscInt64_FMT " (written by dmhs %s); dmhs %s reads version %d",
+             "-restart %s: checkpoint format version %" PetscInt64_FMT
+             " (written by dmhs %s); dmhs %s reads version %d",
              path, version, text, DMHS_VERSION, CHECKPOINT_FORMAT_VERSION);
   PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
   PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-             "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text, s->scn->name);
+             "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text,
+             s->scn->name);
   PetscCall(checkpoint_compare_options(s, path, fid));
 
   /* the scene was built with the current options: it must hold as many particles */
@@ -384,7 +397,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n_built));
   PetscCheck(n_file == n_built, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
              "-restart %s holds %" PetscInt64_FMT " particles but scene '%s' built %" PetscInt64_FMT
-             " with the current options: restart with the options of the run that wrote it (its 'options' attribute)",
+             " with the current options: restart with the options of the run that wrote it (its "
+             "'options' attribute)",
              path, n_file, s->scn->name, n_built);
 
   /* rows per rank: as written on the same rank count (bitwise continuation), else
@@ -395,23 +409,27 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
     PetscCall(checkpoint_read_rows(s->comm, path, grp, "particles", &counts_desc, &mine, 1, s->rank,
                                    s->size, PETSC_TRUE));
     PetscCheck(mine >= 0 && mine <= n_file, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-               "checkpoint %s: rank_counts[%d] = %" PetscInt64_FMT " is out of range", path, (int)s->rank, mine);
+               "checkpoint %s: rank_counts[%d] = %" PetscInt64_FMT " is out of range", path,
+               (int)s->rank, mine);
     n_local = (PetscInt)mine;
   } else {
     n_local = (PetscInt)(n_file / s->size + (s->rank < n_file % s->size ? 1 : 0));
   }
   PetscCall(h5io_offsets(s->comm, n_local, &offset, &n_check));
   PetscCheck(n_check == n_file, s->comm, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s: rank_counts add up to %" PetscInt64_FMT ", not n_particles = %" PetscInt64_FMT, path,
-             n_check, n_file);
+             "checkpoint %s: rank_counts add up to %" PetscInt64_FMT
+             ", not n_particles = %" PetscInt64_FMT,
+             path, n_check, n_file);
 
   /* replace the owned particles */
   s->ps.n_ghost = 0;
   s->ps.n_owned = 0;
   PetscCall(particles_reserve(&s->ps, n_local));
   for (size_t k = 0; k < nf; k++) {
-    if (!(t[k].flags & FIELD_CHECKPOINT)) continue;
-    PetscCall(h5io_read_rows(s->comm, path, grp, &t[k], *fields_member(&s->ps, &t[k]), n_local, offset, n_file));
+    if (!(t[k].flags & FIELD_CHECKPOINT))
+      continue;
+    PetscCall(h5io_read_rows(s->comm, path, grp, &t[k], *fields_member(&s->ps, &t[k]), n_local,
+                             offset, n_file));
   }
   s->ps.n_owned = n_local;
   /* a duplicated particle first (the precise complaint), then every dataset's checksum */
@@ -442,9 +460,10 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
   PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
   PetscCall(h5io_get_reals(path, fid, "body_accel", s->body_accel, DMHS_DIM));
-  PetscCheck(s->ts.step_anchor >= 0 && s->ts.step_anchor <= step, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")", path,
-             s->ts.step_anchor, step);
+  PetscCheck(s->ts.step_anchor >= 0 && s->ts.step_anchor <= step, PETSC_COMM_SELF,
+             PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")",
+             path, s->ts.step_anchor, step);
   PetscCheck(step >= 0 && s->dt > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
   s->step = (PetscInt)step;
@@ -455,7 +474,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
     module *mod = s->modules[m];
     char owner[80];
     hid_t modules;
-    if (!mod->checkpoint_read) continue;
+    if (!mod->checkpoint_read)
+      continue;
     PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
     io.owner = owner;
     PetscCall(PetscSNPrintf(io.where, sizeof(io.where), "modules/%s", mod->name));

@@ -58,7 +58,8 @@ PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, double keep, FILE **out) {
+PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, double keep,
+                                FILE **out) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   int found = 0;
   PetscFunctionBeginUser;
@@ -69,9 +70,10 @@ PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, do
   if (s->io.restarted) {
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     const int err = csv_truncate(path, tmp, keep, &found);
-    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "cannot continue %s after the restart (keeping its rows with a first field up to %g): %s",
-               path, keep, strerror(err));
+    PetscCheck(
+        !err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+        "cannot continue %s after the restart (keeping its rows with a first field up to %g): %s",
+        path, keep, strerror(err));
   }
   *out = fopen(path, found ? "a" : "w");
   PetscCheck(*out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,

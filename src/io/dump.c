@@ -13,7 +13,8 @@
 PetscErrorCode dump_set_from_options(sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Final-state dump", NULL);
-  PetscCall(PetscOptionsString("-dump_final", "Write gid-sorted final particle states to this CSV file", NULL,
+  PetscCall(PetscOptionsString("-dump_final",
+                               "Write gid-sorted final particle states to this CSV file", NULL,
                                s->dump_final, s->dump_final, sizeof(s->dump_final), NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
@@ -29,7 +30,8 @@ PetscErrorCode dump_final(sim *s) {
   double *mine, *all = NULL;
   size_t n_mine, total;
   PetscFunctionBeginUser;
-  if (!s->dump_final[0]) PetscFunctionReturn(0);
+  if (!s->dump_final[0])
+    PetscFunctionReturn(0);
   n_mine = (size_t)ps->n_owned * DUMP_COLS;
   PetscCall(PetscMalloc1(n_mine + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -49,14 +51,17 @@ PetscErrorCode dump_final(sim *s) {
     qsort(all, n, DUMP_COLS * sizeof(double), dump_compare);
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", s->dump_final));
     FILE *f = fopen(tmp, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-dump_final: cannot write %s: %s", tmp, strerror(errno));
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-dump_final: cannot write %s: %s", tmp,
+               strerror(errno));
     int ok = fprintf(f, "gid,type,x,y,vx,vy,rho\n") > 0;
     for (size_t k = 0; k < n && ok; k++) {
       const double *r = all + DUMP_COLS * k;
-      ok = fprintf(f, "%.0f,%.0f,%.17e,%.17e,%.17e,%.17e,%.17e\n", r[0], r[1], r[2], r[3], r[4], r[5], r[6]) > 0;
+      ok = fprintf(f, "%.0f,%.0f,%.17e,%.17e,%.17e,%.17e,%.17e\n", r[0], r[1], r[2], r[3], r[4],
+                   r[5], r[6]) > 0;
     }
     ok = (fclose(f) == 0) && ok;
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-dump_final: writing %s failed (disk full?)", tmp);
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "-dump_final: writing %s failed (disk full?)", tmp);
     PetscCheck(rename(tmp, s->dump_final) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "-dump_final: cannot rename %s to %s: %s", tmp, s->dump_final, strerror(errno));
     PetscCall(PetscFree(all));

@@ -20,8 +20,10 @@ typedef struct {
 static inline herr_t h5check_walk_(unsigned n, const H5E_error2_t *e, void *ctx) {
   h5check_stack *st = ctx;
   /* walked downward: entry 0 is the API call, the last one the root cause */
-  if (n == 0 && e->desc) snprintf(st->outer, sizeof(st->outer), "%s", e->desc);
-  if (e->desc) snprintf(st->inner, sizeof(st->inner), "%s", e->desc);
+  if (n == 0 && e->desc)
+    snprintf(st->outer, sizeof(st->outer), "%s", e->desc);
+  if (e->desc)
+    snprintf(st->inner, sizeof(st->inner), "%s", e->desc);
   return 0;
 }
 
@@ -29,9 +31,12 @@ static inline herr_t h5check_walk_(unsigned n, const H5E_error2_t *e, void *ctx)
 static inline void h5check_describe(char *buf, size_t len) {
   h5check_stack st = {{0}, {0}};
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, h5check_walk_, &st);
-  if (!st.outer[0]) snprintf(buf, len, "no HDF5 error detail");
-  else if (!strcmp(st.outer, st.inner)) snprintf(buf, len, "%s", st.outer);
-  else snprintf(buf, len, "%s (cause: %s)", st.outer, st.inner);
+  if (!st.outer[0])
+    snprintf(buf, len, "no HDF5 error detail");
+  else if (!strcmp(st.outer, st.inner))
+    snprintf(buf, len, "%s", st.outer);
+  else
+    snprintf(buf, len, "%s (cause: %s)", st.outer, st.inner);
   H5Eclear2(H5E_DEFAULT);
 }
 
@@ -43,14 +48,14 @@ static inline PetscErrorCode h5check_quiet(void) {
   PetscFunctionReturn(0);
 }
 
-#define PetscCallHDF5(file, call) \
-  do { \
-    if ((call) < 0) { \
-      char h5check_msg_[360]; \
-      h5check_describe(h5check_msg_, sizeof(h5check_msg_)); \
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "HDF5 call %s failed on file %s: %s", #call, \
-              (file), h5check_msg_); \
-    } \
+#define PetscCallHDF5(file, call)                                                                  \
+  do {                                                                                             \
+    if ((call) < 0) {                                                                              \
+      char h5check_msg_[360];                                                                      \
+      h5check_describe(h5check_msg_, sizeof(h5check_msg_));                                        \
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "HDF5 call %s failed on file %s: %s",    \
+              #call, (file), h5check_msg_);                                                        \
+    }                                                                                              \
   } while (0)
 
 #endif

@@ -30,7 +30,9 @@
 
 static volatile sig_atomic_t io_signal_received = 0;
 
-static void io_on_signal(int sig) { io_signal_received = sig; }
+static void io_on_signal(int sig) {
+  io_signal_received = sig;
+}
 
 static const char *io_signal_name(int sig) {
   return sig == SIGTERM ? "SIGTERM" : sig == SIGUSR1 ? "SIGUSR1" : "a signal";
@@ -43,15 +45,19 @@ PetscErrorCode io_set_from_options(sim *s) {
   io->checkpoint_at_end = PETSC_TRUE;
   io->last_checkpoint_step = -1;
   PetscOptionsBegin(s->comm, NULL, "Output, checkpoints and restart", NULL);
-  PetscCall(PetscOptionsBool("-output_snapshots",
-                             "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
-                             io->snapshots, &io->snapshots, NULL));
-  PetscCall(PetscOptionsReal("-checkpoint_interval",
-                             "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
-                             io->checkpoint_interval, &io->checkpoint_interval, NULL));
-  PetscCall(PetscOptionsBool("-checkpoint_at_end", "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
+  PetscCall(PetscOptionsBool(
+      "-output_snapshots",
+      "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
+      io->snapshots, &io->snapshots, NULL));
+  PetscCall(PetscOptionsReal(
+      "-checkpoint_interval",
+      "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
+      io->checkpoint_interval, &io->checkpoint_interval, NULL));
+  PetscCall(PetscOptionsBool("-checkpoint_at_end",
+                             "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
-  PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint file (same scene and options)", NULL,
+  PetscCall(PetscOptionsString("-restart",
+                               "Continue from this checkpoint file (same scene and options)", NULL,
                                io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
   PetscCall(PetscOptionsBool(
       "-restart_allow_change",
@@ -76,9 +82,12 @@ static void io_now_iso(char *buf, size_t len) {
 static void io_json_string(FILE *f, const char *v) {
   fputc('"', f);
   for (const unsigned char *c = (const unsigned char *)(v ? v : ""); *c; c++) {
-    if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
-    else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
-    else fputc(*c, f);
+    if (*c == '"' || *c == '\\')
+      fprintf(f, "\\%c", *c);
+    else if (*c < 0x20)
+      fprintf(f, "\\u%04x", *c);
+    else
+      fputc(*c, f);
   }
   fputc('"', f);
 }
@@ -129,8 +138,10 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   fprintf(f, ",\n  \"ranks\": %d,\n  \"options\": ", (int)s->size);
   io_json_string(f, s->io.options);
   fprintf(f, ",\n  \"restart_from\": ");
-  if (s->io.restart_file[0]) io_json_string(f, s->io.restart_file);
-  else fprintf(f, "null");
+  if (s->io.restart_file[0])
+    io_json_string(f, s->io.restart_file);
+  else
+    fprintf(f, "null");
   if (s->io.restart_file[0]) {
     fprintf(f, ",\n  \"restart_allow_change\": %s,\n  \"restart_changes\": ",
             s->io.restart_allow_change ? "true" : "false");
@@ -150,12 +161,15 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   if (ended) {
     io_now_iso(end, sizeof(end));
     io_json_string(f, end);
-  } else fprintf(f, "null");
+  } else
+    fprintf(f, "null");
   fprintf(f, ",\n  \"status\": ");
   io_json_string(f, status);
   fprintf(f, ",\n  \"step\": %lld,\n  \"t\": %.17g,\n  \"checkpoint\": ", (long long)s->step, s->t);
-  if (s->io.last_checkpoint_step >= 0) io_json_string(f, checkpoint);
-  else fprintf(f, "null");
+  if (s->io.last_checkpoint_step >= 0)
+    io_json_string(f, checkpoint);
+  else
+    fprintf(f, "null");
   if (message) {
     fprintf(f, ",\n  \"message\": ");
     io_json_string(f, message);
@@ -171,17 +185,19 @@ static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
   PetscFunctionBeginUser;
   if (s->rank == 0) {
     const int err = io_write_run_json(s, status, NULL, ended);
-    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s", s->output_dir,
-               strerror(err));
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
+               s->output_dir, strerror(err));
   }
   PetscFunctionReturn(0);
 }
 
 void io_record_error(sim *s, const char *message) {
-  if (!s || s->rank != 0 || !s->io.run_json_started) return;
+  if (!s || s->rank != 0 || !s->io.run_json_started)
+    return;
   /* a write the error interrupted (disk full) leaves its temporary file */
   (void)outdir_remove_tmp(s->output_dir);
-  (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr", 1);
+  (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr",
+                          1);
 }
 
 /* ---- setup, restart ------------------------------------------------------ */
@@ -224,13 +240,15 @@ PetscErrorCode io_setup(sim *s) {
   }
   PetscCall(io_run_json(s, "running", PETSC_FALSE));
   io->run_json_started = PETSC_TRUE;
-  if (s->rank == 0) PetscCall(xdmf_create(&io->xdmf));
+  if (s->rank == 0)
+    PetscCall(xdmf_create(&io->xdmf));
   memset(&sa, 0, sizeof(sa));
   sa.sa_handler = io_on_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART | SA_RESETHAND;
-  PetscCheck(sigaction(SIGTERM, &sa, NULL) == 0 && sigaction(SIGUSR1, &sa, NULL) == 0, PETSC_COMM_SELF,
-             PETSC_ERR_SYS, "cannot install the SIGTERM/SIGUSR1 handlers: %s", strerror(errno));
+  PetscCheck(sigaction(SIGTERM, &sa, NULL) == 0 && sigaction(SIGUSR1, &sa, NULL) == 0,
+             PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the SIGTERM/SIGUSR1 handlers: %s",
+             strerror(errno));
   PetscFunctionReturn(0);
 }
 
@@ -254,9 +272,10 @@ PetscErrorCode io_restart(sim *s) {
     PetscCall(sim_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
-    PetscCall(PetscPrintf(s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
-                          io->restart_file, s->step, s->t, s->dt,
-                          s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
+    PetscCall(PetscPrintf(
+        s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
+        io->restart_file, s->step, s->t, s->dt,
+        s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
     if (s->rank == 0) {
       /* the snapshots the interrupted run wrote after its checkpoint are written again */
       const int n = outdir_remove_snapshots(s->output_dir, (long)io->snapshot_index);
@@ -286,7 +305,8 @@ PetscErrorCode io_output(sim *s) {
   char name[64], path[PETSC_MAX_PATH_LEN];
   PetscInt64 n, n_bonds;
   PetscFunctionBeginUser;
-  if (!io->snapshots) PetscFunctionReturn(0);
+  if (!io->snapshots)
+    PetscFunctionReturn(0);
   PetscCall(snapshot_write(s, io->snapshot_index, &n, &n_bonds));
   if (s->rank == 0) {
     const xdmf_connectivity bonds = {"/bonds/rows", n_bonds, 2, "bonds"};
@@ -318,16 +338,19 @@ PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
   PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, s->comm));
   if (io->checkpoint_interval > 0 && s->t >= io->next_checkpoint_t - 0.5 * s->dt) {
     due = PETSC_TRUE;
-    while (io->next_checkpoint_t <= s->t + 0.5 * s->dt) io->next_checkpoint_t += io->checkpoint_interval;
+    while (io->next_checkpoint_t <= s->t + 0.5 * s->dt)
+      io->next_checkpoint_t += io->checkpoint_interval;
   }
-  if (due || any) PetscCall(io_checkpoint(s));
+  if (due || any)
+    PetscCall(io_checkpoint(s));
   if (any) {
     char path[PETSC_MAX_PATH_LEN];
     PetscCall(sim_output_path(s, "checkpoint.h5", path, sizeof(path)));
     io->stop_signal = any;
     *stop = PETSC_TRUE;
     PetscCall(PetscPrintf(s->comm,
-                          "dmhs: received %s: stopped at step %" PetscInt_FMT ", t = %.9g s after writing the "
+                          "dmhs: received %s: stopped at step %" PetscInt_FMT
+                          ", t = %.9g s after writing the "
                           "checkpoint %s; continue with -restart %s\n",
                           io_signal_name(any), s->step, s->t, path, path));
   }
@@ -337,7 +360,8 @@ PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
 PetscErrorCode io_finish(sim *s) {
   io_state *io = &s->io;
   PetscFunctionBeginUser;
-  if (io->checkpoint_at_end && io->last_checkpoint_step != s->step) PetscCall(io_checkpoint(s));
+  if (io->checkpoint_at_end && io->last_checkpoint_step != s->step)
+    PetscCall(io_checkpoint(s));
   PetscCall(io_run_json(s, io->stop_signal ? "signal-checkpoint" : "completed", PETSC_TRUE));
   PetscFunctionReturn(0);
 }

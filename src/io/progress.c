@@ -26,9 +26,11 @@ PetscErrorCode progress_print(sim *s) {
   const double left = s->t_end - s->t > 0 ? s->t_end - s->t : 0.0;
   const double eta = done > 0 ? elapsed * left / done : 0.0;
   PetscCall(PetscPrintf(s->comm,
-                        "step %8" PetscInt_FMT "  t %.6e s  dt %.3e s (%s)  particle-steps/s %.3e  ETA %7.1f s  "
+                        "step %8" PetscInt_FMT
+                        "  t %.6e s  dt %.3e s (%s)  particle-steps/s %.3e  ETA %7.1f s  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",
-                        s->step, s->t, s->dt, s->ts.binding[0] ? s->ts.binding : "no limit", rate, eta, sqrt(global[0]), global[1], s->part.imbalance));
+                        s->step, s->t, s->dt, s->ts.binding[0] ? s->ts.binding : "no limit", rate,
+                        eta, sqrt(global[0]), global[1], s->part.imbalance));
   PetscFunctionReturn(0);
 }
 
@@ -38,11 +40,12 @@ PetscErrorCode progress_summary(sim *s) {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_owned, &n_total, 1, MPIU_INT, MPI_SUM, s->comm));
   snprintf(t_text, sizeof(t_text), "%g", s->t); /* C formatting: PETSc's %g prints "1." */
-  PetscCall(PetscPrintf(s->comm,
-                        "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
-                        " steps to t = %s s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
-                        "particle-steps/s: %.4e\n",
-                        s->scn->name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds, s->loop_seconds,
-                        particle_steps_per_second(s, s->loop_seconds)));
+  PetscCall(
+      PetscPrintf(s->comm,
+                  "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
+                  " steps to t = %s s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
+                  "particle-steps/s: %.4e\n",
+                  s->scn->name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds,
+                  s->loop_seconds, particle_steps_per_second(s, s->loop_seconds)));
   PetscFunctionReturn(0);
 }

@@ -9,7 +9,9 @@
 #include "h5io.h"
 #include "guard.h"
 
-int snapshot_file_width(const field_desc *f) { return f->width == DMHS_DIM && DMHS_DIM == 2 ? 3 : f->width; }
+int snapshot_file_width(const field_desc *f) {
+  return f->width == DMHS_DIM && DMHS_DIM == 2 ? 3 : f->width;
+}
 
 PetscErrorCode snapshot_name(PetscInt index, char *name, size_t len) {
   PetscFunctionBeginUser;
@@ -21,36 +23,43 @@ PetscErrorCode snapshot_name(PetscInt index, char *name, size_t len) {
  * joins, for the XDMF Polyline grid. The topology is replicated by gid, so
  * every rank marks the snapshot row of its owned bonded particles and a max
  * reduction gives every rank the row of every bonded gid; rank 0 writes. */
-static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, PetscInt64 offset, PetscInt64 *n_bonds) {
+static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, PetscInt64 offset,
+                                           PetscInt64 *n_bonds) {
   topology *t = s->topo;
   PetscInt64 *row, *pairs = NULL;
   static const field_desc rows_field = {"rows", 2, FIELD_INT64, 0, 0, "1"};
   hid_t grp;
   PetscFunctionBeginUser;
   *n_bonds = t ? t->n_bonds : 0;
-  if (!*n_bonds) PetscFunctionReturn(0);
+  if (!*n_bonds)
+    PetscFunctionReturn(0);
   PetscInt slot;
   PetscCall(topology_gid_slot(t, t->bond_gid[0][0], &slot)); /* builds the gid tables if needed */
   PetscCall(PetscMalloc1(t->n_gids + 1, &row));
-  for (PetscInt k = 0; k < t->n_gids; k++) row[k] = -1;
+  for (PetscInt k = 0; k < t->n_gids; k++)
+    row[k] = -1;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
     PetscCall(topology_gid_slot(t, s->ps.gid[i], &slot));
-    if (slot >= 0) row[slot] = offset + i;
+    if (slot >= 0)
+      row[slot] = offset + i;
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, row, (PetscMPIInt)t->n_gids, MPIU_INT64, MPI_MAX, s->comm));
+  PetscCallMPI(
+      MPI_Allreduce(MPI_IN_PLACE, row, (PetscMPIInt)t->n_gids, MPIU_INT64, MPI_MAX, s->comm));
   if (s->rank == 0) {
     PetscCall(PetscMalloc1(2 * t->n_bonds, &pairs));
     for (PetscInt b = 0; b < t->n_bonds; b++)
       for (int e = 0; e < 2; e++) {
         PetscCall(topology_gid_slot(t, t->bond_gid[b][e], &slot));
         PetscCheck(slot >= 0 && row[slot] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                   "snapshot: bond %" PetscInt_FMT " names particle gid %" PetscInt64_FMT " that no rank owns", b,
-                   t->bond_gid[b][e]);
+                   "snapshot: bond %" PetscInt_FMT " names particle gid %" PetscInt64_FMT
+                   " that no rank owns",
+                   b, t->bond_gid[b][e]);
         pairs[2 * b + e] = row[slot];
       }
   }
   PetscCallHDF5(path, grp = H5Gcreate2(fid, "bonds", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, s->rank == 0 ? t->n_bonds : 0, 0, t->n_bonds, 2));
+  PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, s->rank == 0 ? t->n_bonds : 0,
+                            0, t->n_bonds, 2));
   PetscCallHDF5(path, H5Gclose(grp));
   PetscCall(PetscFree(pairs));
   PetscCall(PetscFree(row));
@@ -86,9 +95,10 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
   }
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
-    if (!(t[k].flags & FIELD_OUTPUT)) continue;
-    PetscCall(h5io_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]), s->ps.n_owned, offset, n,
-                              snapshot_file_width(&t[k])));
+    if (!(t[k].flags & FIELD_OUTPUT))
+      continue;
+    PetscCall(h5io_write_rows(s->comm, tmp, grp, &t[k], *fields_member(&s->ps, &t[k]),
+                              s->ps.n_owned, offset, n, snapshot_file_width(&t[k])));
   }
   PetscCallHDF5(tmp, H5Gclose(grp));
   PetscCall(snapshot_write_bonds(s, tmp, fid, offset, n_bonds));

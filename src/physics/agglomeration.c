@@ -544,7 +544,8 @@ static PetscErrorCode agglomeration_checkpoint_write(module *self, sim *s, check
   const agg_data *d = self->data;
   const topology *t = s->topo;
   const PetscInt nb = t->n_bonds - d->n_static_bonds;
-  PetscInt64 state[5] = {d->next_event, d->n_seeds, d->n_clot, nb, s->force_rebuild ? 1 : 0}, *g, *sd;
+  PetscInt64 state[5] = {d->next_event, d->n_seeds, d->n_clot, nb, s->force_rebuild ? 1 : 0}, *g,
+             *sd;
   double *r0;
   PetscFunctionBeginUser;
   PetscCall(checkpoint_put_ints(io, "state", state, 5));

@@ -23,14 +23,16 @@ typedef struct {
 
 static module *angle_find(sim *s) {
   for (int m = 0; m < s->n_modules; m++)
-    if (!strcmp(s->modules[m]->name, "angle_harmonic")) return s->modules[m];
+    if (!strcmp(s->modules[m]->name, "angle_harmonic"))
+      return s->modules[m];
   return NULL;
 }
 
 PetscErrorCode angle_set_default(sim *s, double k, double theta0_deg) {
   module *m = angle_find(s);
   PetscFunctionBeginUser;
-  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "angle_set_default: angle_harmonic is not enabled (call topology_enable)");
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER,
+             "angle_set_default: angle_harmonic is not enabled (call topology_enable)");
   angle_data *d = m->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     d->k[t] = k;
@@ -55,20 +57,24 @@ static PetscErrorCode angle_set_from_options(module *self, sim *s) {
   PetscInt n;
   PetscBool set;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, "Harmonic angles U = k_a (theta - theta0)^2 (module angle_harmonic)", NULL);
+  PetscOptionsBegin(s->comm, NULL,
+                    "Harmonic angles U = k_a (theta - theta0)^2 (module angle_harmonic)", NULL);
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-angle_k", "Angle stiffness k_a [J], one value or one per angle type", NULL, d->k, &n,
-                                  &set));
+  PetscCall(PetscOptionsRealArray("-angle_k",
+                                  "Angle stiffness k_a [J], one value or one per angle type", NULL,
+                                  d->k, &n, &set));
   d->n_k = set ? n : 0;
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-angle_theta0", "Rest angle theta0 [deg], one value or one per angle type", NULL,
+  PetscCall(PetscOptionsRealArray("-angle_theta0",
+                                  "Rest angle theta0 [deg], one value or one per angle type", NULL,
                                   d->theta0_deg, &n, &set));
   d->n_theta0 = set ? n : 0;
   PetscOptionsEnd();
   /* the far end of an angle is two bonds from its owned anchor */
   self->reach = 0;
   for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->needs & MODULE_NEEDS_BONDS) self->reach = PetscMax(self->reach, 2.0 * s->modules[m]->reach);
+    if (s->modules[m]->needs & MODULE_NEEDS_BONDS)
+      self->reach = PetscMax(self->reach, 2.0 * s->modules[m]->reach);
   PetscFunctionReturn(0);
 }
 
@@ -79,12 +85,14 @@ static PetscErrorCode angle_setup(module *self, sim *s) {
   PetscCall(bond_check_type_coeffs("-angle_k", d->k, d->n_k, nt));
   PetscCall(bond_check_type_coeffs("-angle_theta0", d->theta0_deg, d->n_theta0, nt));
   for (PetscInt t = 0; t < nt; t++) {
-    PetscCheck(d->k[t] >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-angle_k must be >= 0 (type %" PetscInt_FMT ": %g J)",
-               t, d->k[t]);
+    PetscCheck(d->k[t] >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-angle_k must be >= 0 (type %" PetscInt_FMT ": %g J)", t, d->k[t]);
     PetscCheck(d->theta0_deg[t] >= 0 && d->theta0_deg[t] <= 180, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-angle_theta0 must lie in [0, 180] deg (type %" PetscInt_FMT ": %g)", t, d->theta0_deg[t]);
+               "-angle_theta0 must lie in [0, 180] deg (type %" PetscInt_FMT ": %g)", t,
+               d->theta0_deg[t]);
   }
-  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) d->theta0[t] = d->theta0_deg[t] * M_PI / 180.0;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
+    d->theta0[t] = d->theta0_deg[t] * M_PI / 180.0;
   PetscCall(bond_min_solid_mass(s, &d->m_min));
   PetscFunctionReturn(0);
 }
@@ -129,13 +137,15 @@ static PetscErrorCode angle_virial(module *self, sim *s, double (*W)[3]) {
   const particles *ps = &s->ps;
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < t->n_angle_local; q++) {
-    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2],
+                   ty = t->angle_ltype[q];
     const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
     double fi[2], fk[2];
     (void)angle_harmonic_iact(d->k[ty], d->theta0[ty], ra, rb, fi, fk);
     const double third = -1.0 / 3.0;
-    const double w[3] = {third * (ra[0] * fi[0] + rb[0] * fk[0]), third * (ra[0] * fi[1] + rb[0] * fk[1]),
+    const double w[3] = {third * (ra[0] * fi[0] + rb[0] * fk[0]),
+                         third * (ra[0] * fi[1] + rb[0] * fk[1]),
                          third * (ra[1] * fi[1] + rb[1] * fk[1])};
     for (int c = 0; c < 3; c++) {
       W[i][c] += w[c];
@@ -153,7 +163,8 @@ static PetscErrorCode angle_energy_sum(module *self, sim *s, double *e) {
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < t->n_angle_local; q++) {
-    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2],
+                   ty = t->angle_ltype[q];
     const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
     const double dth = angle_theta(ra, rb) - d->theta0[ty];
@@ -169,28 +180,34 @@ static PetscErrorCode angle_max_dt(module *self, sim *s, dt_limits *l) {
   const particles *ps = &s->ps;
   double local = INFINITY, limit;
   PetscFunctionBeginUser;
-  if (!isfinite(d->m_min)) PetscFunctionReturn(0);
+  if (!isfinite(d->m_min))
+    PetscFunctionReturn(0);
   PetscCall(bond_ensure_resolved(s));
   for (PetscInt q = 0; q < t->n_angle_local; q++) {
-    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2], ty = t->angle_ltype[q];
+    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2],
+                   ty = t->angle_ltype[q];
     const double r = PetscMin(hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]),
                               hypot(ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]));
-    if (d->k[ty] > 0) local = PetscMin(local, SPRING_DT_FACTOR * sqrt(d->m_min * r * r / (2.0 * d->k[ty])));
+    if (d->k[ty] > 0)
+      local = PetscMin(local, SPRING_DT_FACTOR * sqrt(d->m_min * r * r / (2.0 * d->k[ty])));
   }
   PetscCallMPI(MPI_Allreduce(&local, &limit, 1, MPI_DOUBLE, MPI_MIN, s->comm));
   if (isfinite(limit))
-    PetscCall(dt_limits_add(l, "angle harmonic", "0.2 sqrt(m/k), k = 2 k_a/r^2, r = shortest arm", limit));
+    PetscCall(dt_limits_add(l, "angle harmonic", "0.2 sqrt(m/k), k = 2 k_a/r^2, r = shortest arm",
+                            limit));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode angle_view(module *self, sim *s, PetscViewer v) {
   const angle_data *d = self->data;
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(v, "angle_harmonic: %" PetscInt_FMT " angles, U = k_a (theta - theta0)^2\n",
-                                   s->topo->n_angles));
+  PetscCall(PetscViewerASCIIPrintf(
+      v, "angle_harmonic: %" PetscInt_FMT " angles, U = k_a (theta - theta0)^2\n",
+      s->topo->n_angles));
   for (PetscInt t = 0; t < s->topo->n_angle_types; t++)
-    PetscCall(PetscViewerASCIIPrintf(v, "  angle type %" PetscInt_FMT ": k_a = %g J, theta0 = %g deg\n", t, d->k[t],
-                                     d->theta0_deg[t]));
+    PetscCall(
+        PetscViewerASCIIPrintf(v, "  angle type %" PetscInt_FMT ": k_a = %g J, theta0 = %g deg\n",
+                               t, d->k[t], d->theta0_deg[t]));
   PetscFunctionReturn(0);
 }
 

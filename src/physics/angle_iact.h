@@ -17,8 +17,8 @@ static inline double angle_theta(const double a[2], const double b[2]) {
 }
 
 /* Returns U; writes F_i and F_k (F_j = -(F_i + F_k)). */
-static inline double angle_harmonic_iact(double ka, double theta0, const double a[2], const double b[2],
-                                         double fi[2], double fk[2]) {
+static inline double angle_harmonic_iact(double ka, double theta0, const double a[2],
+                                         const double b[2], double fi[2], double fk[2]) {
   const double c = a[0] * b[1] - a[1] * b[0];
   const double theta = atan2(fabs(c), a[0] * b[0] + a[1] * b[1]);
   const double dth = theta - theta0;

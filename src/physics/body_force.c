@@ -3,8 +3,8 @@
  *   a_body(t) = F                         (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
  * plus gravity (0, -g). -body_force_amplitude g0 is F = (g0, 0), the pulsatile
- * drive g0 sin(2 pi t/T) of the vein case (SPEC 4.3). The current value is also left in sim->body_accel,
- * where the wall pass reads it for the hydrostatic part of wall pressure. */
+ * drive g0 sin(2 pi t/T) of the vein case (SPEC 4.3). The current value is also left in
+ * sim->body_accel, where the wall pass reads it for the hydrostatic part of wall pressure. */
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
@@ -12,10 +12,11 @@
 #include "dmhs/integrate.h"
 
 typedef struct {
-  double F[DMHS_DIM]; /* [m/s^2] */
-  double period;      /* [s], 0 = constant */
-  double gravity;     /* [m/s^2], along -y */
-  PetscBool on_type[PTYPE_COUNT]; /* which particle types feel it (walls never: their motion is prescribed) */
+  double F[DMHS_DIM];             /* [m/s^2] */
+  double period;                  /* [s], 0 = constant */
+  double gravity;                 /* [m/s^2], along -y */
+  PetscBool on_type[PTYPE_COUNT]; /* which particle types feel it (walls never: their motion is
+                                     prescribed) */
 } body_force_data;
 
 static const char *const body_force_type_names[PTYPE_COUNT] = {"fluid", "wall", "solid", "clot"};
@@ -34,8 +35,10 @@ PetscErrorCode body_force_get(module *m, double F[DMHS_DIM], double *period) {
   PetscCheck(d && !strcmp(m->name, "body_force"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
              "body_force_get: module %s is not body_force", m->name);
   if (F)
-    for (int k = 0; k < DMHS_DIM; k++) F[k] = d->F[k];
-  if (period) *period = d->period;
+    for (int k = 0; k < DMHS_DIM; k++)
+      F[k] = d->F[k];
+  if (period)
+    *period = d->period;
   PetscFunctionReturn(0);
 }
 
@@ -62,39 +65,48 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   PetscBool set_types;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
-  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n, &set));
+  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n,
+                                  &set));
   PetscCall(PetscOptionsReal("-body_force_amplitude",
-                             "Drive amplitude g0 along x [m/s^2]: g0 sin(2 pi t/T) with -body_force_period T, else constant "
+                             "Drive amplitude g0 along x [m/s^2]: g0 sin(2 pi t/T) with "
+                             "-body_force_period T, else constant "
                              "(same as -body_force g0,0)",
                              NULL, amplitude, &amplitude, &set_amplitude));
-  PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL,
-                             d->period, &d->period, NULL));
-  PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity, NULL));
-  PetscCall(PetscOptionsStringArray("-body_force_types", "Particle types the body force acts on: fluid, solid, clot [1]",
+  PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)",
+                             NULL, d->period, &d->period, NULL));
+  PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity,
+                             NULL));
+  PetscCall(PetscOptionsStringArray("-body_force_types",
+                                    "Particle types the body force acts on: fluid, solid, clot [1]",
                                     NULL, types, &n_types, &set_types));
   PetscOptionsEnd();
   if (set_types) {
-    for (int t = 0; t < PTYPE_COUNT; t++) d->on_type[t] = PETSC_FALSE;
+    for (int t = 0; t < PTYPE_COUNT; t++)
+      d->on_type[t] = PETSC_FALSE;
     for (PetscInt k = 0; k < n_types; k++) {
       int found = -1;
       for (int t = 0; t < PTYPE_COUNT; t++)
-        if (!strcmp(types[k], body_force_type_names[t])) found = t;
+        if (!strcmp(types[k], body_force_type_names[t]))
+          found = t;
       PetscCheck(found >= 0 && found != PTYPE_WALL, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-                 "-body_force_types: '%s' is not fluid or solid or clot (walls move as prescribed)", types[k]);
+                 "-body_force_types: '%s' is not fluid or solid or clot (walls move as prescribed)",
+                 types[k]);
       d->on_type[found] = PETSC_TRUE;
     }
   }
   if (set_types)
-    for (PetscInt k = 0; k < n_types; k++) PetscCall(PetscFree(types[k]));
+    for (PetscInt k = 0; k < n_types; k++)
+      PetscCall(PetscFree(types[k]));
   PetscCheck(!(set && set_amplitude), s->comm, PETSC_ERR_ARG_INCOMP,
              "give either -body_force Fx,Fy or -body_force_amplitude g0 (along x), not both");
   if (set_amplitude) {
     d->F[0] = amplitude;
     d->F[1] = 0;
   }
-  PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-body_force takes %d components Fx,Fy (got %d)",
-             DMHS_DIM, (int)n);
-  PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-body_force_period must be >= 0 (got %g)", d->period);
+  PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ,
+             "-body_force takes %d components Fx,Fy (got %d)", DMHS_DIM, (int)n);
+  PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-body_force_period must be >= 0 (got %g)", d->period);
   body_force_value(d, 0.0, s->body_accel);
   PetscFunctionReturn(0);
 }
@@ -107,7 +119,8 @@ static PetscErrorCode body_force_compute(module *self, sim *s) {
   body_force_value(d, s->t, s->body_accel);
   const double ax = s->body_accel[0], ay = s->body_accel[1];
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (!d->on_type[ps->type[i]]) continue;
+    if (!d->on_type[ps->type[i]])
+      continue;
     ps->a[i][0] += ax;
     ps->a[i][1] += ay;
   }
@@ -119,9 +132,11 @@ static PetscErrorCode body_force_compute(module *self, sim *s) {
 static PetscErrorCode body_force_max_dt(module *self, sim *s, dt_limits *l) {
   body_force_data *d = self->data;
   PetscFunctionBeginUser;
-  const double amax = PetscSqrtReal(d->F[0] * d->F[0] + (PetscAbsReal(d->F[1]) + d->gravity) * (PetscAbsReal(d->F[1]) + d->gravity));
+  const double amax = PetscSqrtReal(d->F[0] * d->F[0] + (PetscAbsReal(d->F[1]) + d->gravity) *
+                                                            (PetscAbsReal(d->F[1]) + d->gravity));
   if (amax > 0 && s->sph_enabled)
-    PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2", 0.25 * PetscSqrtReal(0.5 * s->sph.h / amax)));
+    PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2",
+                            0.25 * PetscSqrtReal(0.5 * s->sph.h / amax)));
   PetscFunctionReturn(0);
 }
 
@@ -129,10 +144,11 @@ static PetscErrorCode body_force_view(module *self, sim *s, PetscViewer v) {
   body_force_data *d = self->data;
   PetscFunctionBeginUser;
   (void)s;
-  PetscCall(PetscViewerASCIIPrintf(v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2, on %s%s%s\n",
-                                   d->F[0], d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity,
-                                   d->on_type[PTYPE_FLUID] ? "fluid " : "", d->on_type[PTYPE_SOLID] ? "solid" : "",
-                                   d->on_type[PTYPE_CLOT] ? " clot" : ""));
+  PetscCall(PetscViewerASCIIPrintf(
+      v, "body_force: F = (%g, %g) m/s^2, period %g s%s, gravity %g m/s^2, on %s%s%s\n", d->F[0],
+      d->F[1], d->period, d->period > 0 ? "" : " (constant)", d->gravity,
+      d->on_type[PTYPE_FLUID] ? "fluid " : "", d->on_type[PTYPE_SOLID] ? "solid" : "",
+      d->on_type[PTYPE_CLOT] ? " clot" : ""));
   PetscFunctionReturn(0);
 }
 
@@ -152,6 +168,7 @@ PetscErrorCode body_force_module_create(module **m) {
   (*m)->view = body_force_view;
   (*m)->destroy = body_force_destroy;
   PetscCall(PetscNew((body_force_data **)&(*m)->data));
-  ((body_force_data *)(*m)->data)->on_type[PTYPE_FLUID] = PETSC_TRUE; /* the liquid only, by default */
+  ((body_force_data *)(*m)->data)->on_type[PTYPE_FLUID] =
+      PETSC_TRUE; /* the liquid only, by default */
   PetscFunctionReturn(0);
 }

@@ -7,15 +7,17 @@
 
 const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
 
-PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p, const char *k_help) {
+PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_params *p,
+                                 const char *k_help) {
   PetscInt n = TOPOLOGY_MAX_TYPES;
   PetscBool set;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsRealArray("-bond_k", k_help, NULL, p->k, &n, &set));
   p->n_k = set ? n : 0;
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_r0", "Bond rest length r0 [m], one value or one per bond type", NULL, p->r0,
-                                  &n, &set));
+  PetscCall(PetscOptionsRealArray("-bond_r0",
+                                  "Bond rest length r0 [m], one value or one per bond type", NULL,
+                                  p->r0, &n, &set));
   p->n_r0 = set ? n : 0;
   PetscFunctionReturn(0);
 }
@@ -26,10 +28,10 @@ PetscErrorCode bond_setup_k_r0(sim *s, bond_params *p, const char *k_unit) {
   PetscCall(bond_check_type_coeffs("-bond_k", p->k, p->n_k, nt));
   PetscCall(bond_check_type_coeffs("-bond_r0", p->r0, p->n_r0, nt));
   for (PetscInt t = 0; t < nt; t++) {
-    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_k must be > 0 (type %" PetscInt_FMT ": %g %s)",
-               t, p->k[t], k_unit);
-    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)",
-               t, p->r0[t]);
+    PetscCheck(p->k[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-bond_k must be > 0 (type %" PetscInt_FMT ": %g %s)", t, p->k[t], k_unit);
+    PetscCheck(p->r0[t] > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-bond_r0 must be > 0 (type %" PetscInt_FMT ": %g m)", t, p->r0[t]);
   }
   PetscCall(bond_min_solid_mass(s, &p->m_min));
   PetscFunctionReturn(0);
@@ -43,7 +45,8 @@ PetscErrorCode bond_destroy(module *self) {
 
 static module *bond_find(sim *s) {
   for (int m = 0; m < s->n_modules; m++)
-    if (!strcmp(s->modules[m]->name, "bond_harmonic") || !strcmp(s->modules[m]->name, "bond_nonlinear"))
+    if (!strcmp(s->modules[m]->name, "bond_harmonic") ||
+        !strcmp(s->modules[m]->name, "bond_nonlinear"))
       return s->modules[m];
   return NULL;
 }
@@ -51,7 +54,8 @@ static module *bond_find(sim *s) {
 PetscErrorCode bond_set_default(sim *s, double k, double r0, double rmax) {
   module *m = bond_find(s);
   PetscFunctionBeginUser;
-  PetscCheck(m, s->comm, PETSC_ERR_ORDER, "bond_set_default: no bond module enabled (call topology_enable first)");
+  PetscCheck(m, s->comm, PETSC_ERR_ORDER,
+             "bond_set_default: no bond module enabled (call topology_enable first)");
   bond_params *p = m->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     p->k[t] = k;
@@ -70,10 +74,12 @@ PetscErrorCode bond_get_params(sim *s, bond_style *style, const bond_params **p)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given, PetscInt n_types) {
+PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given,
+                                      PetscInt n_types) {
   PetscFunctionBeginUser;
   if (n_given == 1)
-    for (int t = 1; t < TOPOLOGY_MAX_TYPES; t++) v[t] = v[0];
+    for (int t = 1; t < TOPOLOGY_MAX_TYPES; t++)
+      v[t] = v[0];
   else
     PetscCheck(n_given == 0 || n_given >= n_types, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
                "%s: %" PetscInt_FMT " values given but the structure uses %" PetscInt_FMT
@@ -84,7 +90,8 @@ PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n
 
 PetscErrorCode bond_ensure_resolved(sim *s) {
   PetscFunctionBeginUser;
-  if (!s->topo->resolved) PetscCall(sim_rebuild_neighbours(s));
+  if (!s->topo->resolved)
+    PetscCall(sim_rebuild_neighbours(s));
   PetscFunctionReturn(0);
 }
 
@@ -92,7 +99,8 @@ PetscErrorCode bond_min_solid_mass(sim *s, double *m) {
   double local = INFINITY;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    if (s->ps.type[i] == PTYPE_SOLID) local = PetscMin(local, s->ps.mass[i]);
+    if (s->ps.type[i] == PTYPE_SOLID)
+      local = PetscMin(local, s->ps.mass[i]);
   PetscCallMPI(MPI_Allreduce(&local, m, 1, MPI_DOUBLE, MPI_MIN, s->comm));
   PetscFunctionReturn(0);
 }

@@ -14,11 +14,13 @@ static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
   bond_params *p = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Harmonic bonds U = K (r - r0)^2 (module bond_harmonic)", NULL);
-  PetscCall(bond_options_k_r0(PetscOptionsObject, p,
-                              "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type"));
+  PetscCall(bond_options_k_r0(
+      PetscOptionsObject, p,
+      "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type"));
   PetscOptionsEnd();
   double r0max = 0;
-  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) r0max = PetscMax(r0max, p->r0[t]);
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
+    r0max = PetscMax(r0max, p->r0[t]);
   /* the ghost width must reach a stretched partner; 1.5 r0 is far beyond any sane stretch */
   self->reach = 1.5 * r0max;
   PetscFunctionReturn(0);
@@ -46,7 +48,8 @@ static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
   const PetscInt skip = t->runtime_type;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
-    if (ty == skip) continue;
+    if (ty == skip)
+      continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double fr = bond_harmonic_iact(K[ty], R0[ty], sqrt(d[0] * d[0] + d[1] * d[1]));
     const double fi = fr / mass[i], fj = fr / mass[j];
@@ -68,7 +71,8 @@ static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3])
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (ty == t->runtime_type) continue;
+    if (ty == t->runtime_type)
+      continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
     virial_pair_add(W, i, j, fr, d);
@@ -84,7 +88,8 @@ static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) 
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (ty == t->runtime_type) continue;
+    if (ty == t->runtime_type)
+      continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
     local += t->bond_weight[b] * bond_harmonic_energy(p->k[ty], p->r0[ty], r);
   }
@@ -96,7 +101,8 @@ static PetscErrorCode bond_harmonic_max_dt(module *self, sim *s, dt_limits *l) {
   const bond_params *p = self->data;
   double kmax = 0;
   PetscFunctionBeginUser;
-  for (PetscInt t = 0; t < s->topo->n_bond_types; t++) kmax = PetscMax(kmax, 2.0 * p->k[t]);
+  for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
+    kmax = PetscMax(kmax, 2.0 * p->k[t]);
   if (kmax > 0 && isfinite(p->m_min))
     PetscCall(dt_limits_add(l, "bond harmonic", "0.2 sqrt(m/k), k = U'' = 2K, m = min solid mass",
                             SPRING_DT_FACTOR * sqrt(p->m_min / kmax)));
@@ -106,10 +112,13 @@ static PetscErrorCode bond_harmonic_max_dt(module *self, sim *s, dt_limits *l) {
 static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
   const bond_params *p = self->data;
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(v, "bond_harmonic: %" PetscInt_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
-                                   s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
+  PetscCall(PetscViewerASCIIPrintf(
+      v,
+      "bond_harmonic: %" PetscInt_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
+      s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
   for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
-    PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": K = %g J/m^2, r0 = %g m\n", t, p->k[t], p->r0[t]));
+    PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": K = %g J/m^2, r0 = %g m\n",
+                                     t, p->k[t], p->r0[t]));
   PetscFunctionReturn(0);
 }
 

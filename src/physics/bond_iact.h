@@ -9,8 +9,12 @@
 #define DMHS_BOND_IACT_H
 #include <math.h>
 
-static inline double bond_harmonic_iact(double K, double r0, double r) { return -2.0 * K * (r - r0) / r; }
-static inline double bond_harmonic_energy(double K, double r0, double r) { return K * (r - r0) * (r - r0); }
+static inline double bond_harmonic_iact(double K, double r0, double r) {
+  return -2.0 * K * (r - r0) / r;
+}
+static inline double bond_harmonic_energy(double K, double r0, double r) {
+  return K * (r - r0) * (r - r0);
+}
 
 /* Valid for |x| < L only; callers check the stretch (bond_nonlinear.c). */
 static inline double bond_nonlinear_iact(double kb, double r0, double L, double r) {

@@ -28,15 +28,20 @@ static PetscErrorCode bond_nonlinear_set_from_options(module *self, sim *s) {
   PetscInt n;
   PetscBool set;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, "Nonlinear bonds U = k_b (r-r0)^2/(r_max^2-(r-r0)^2) (module bond_nonlinear)", NULL);
-  PetscCall(bond_options_k_r0(PetscOptionsObject, p, "Bond energy scale k_b [J], one value or one per bond type"));
+  PetscOptionsBegin(s->comm, NULL,
+                    "Nonlinear bonds U = k_b (r-r0)^2/(r_max^2-(r-r0)^2) (module bond_nonlinear)",
+                    NULL);
+  PetscCall(bond_options_k_r0(PetscOptionsObject, p,
+                              "Bond energy scale k_b [J], one value or one per bond type"));
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_rmax", "Largest stretch |r - r0| = r_max [m] (the run stops there)", NULL,
-                                  p->rmax, &n, &set));
+  PetscCall(PetscOptionsRealArray("-bond_rmax",
+                                  "Largest stretch |r - r0| = r_max [m] (the run stops there)",
+                                  NULL, p->rmax, &n, &set));
   p->n_rmax = set ? n : 0;
   PetscOptionsEnd();
   double reach = 0;
-  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) reach = PetscMax(reach, p->r0[t] + p->rmax[t]);
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
+    reach = PetscMax(reach, p->r0[t] + p->rmax[t]);
   self->reach = reach; /* the longest a bond can be */
   PetscFunctionReturn(0);
 }
@@ -54,7 +59,8 @@ static PetscErrorCode bond_nonlinear_setup(module *self, sim *s) {
 }
 
 /* Largest |x|/r_max over the local bonds, and which bond entry. */
-static double bond_nonlinear_max_stretch(const bond_params *p, const topology *t, const particles *ps, PetscInt *which) {
+static double bond_nonlinear_max_stretch(const bond_params *p, const topology *t,
+                                         const particles *ps, PetscInt *which) {
   double best = 0;
   *which = -1;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
@@ -109,18 +115,23 @@ static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
   }
   PetscCall(PetscLogFlops(30.0 * (double)nb));
   PetscCall(PetscLogEventEnd(events.bond, 0, 0, 0, 0));
-  if (worst_b < 0) PetscFunctionReturn(0);
+  if (worst_b < 0)
+    PetscFunctionReturn(0);
   const PetscInt i = t->bond[worst_b][0], j = t->bond[worst_b][1], ty = t->bond_ltype[worst_b];
   const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
   PetscCheck(worst < 1.0, PETSC_COMM_SELF, PETSC_ERR_FP,
              "nonlinear bond between particles gid %" PetscInt64_FMT " and gid %" PetscInt64_FMT
-             " broke at step %" PetscInt_FMT ", t = %g s: |r - r0| = %g m >= r_max = %g m (r = %g m, r0 = %g m, "
-             "stretch %.3f r_max); past r_max the force changes sign. Lower -dt or the load, or raise -bond_rmax / -bond_k",
-             ps->gid[i], ps->gid[j], s->step, s->t, fabs(r - p->r0[ty]), p->rmax[ty], r, p->r0[ty], worst);
+             " broke at step %" PetscInt_FMT
+             ", t = %g s: |r - r0| = %g m >= r_max = %g m (r = %g m, r0 = %g m, "
+             "stretch %.3f r_max); past r_max the force changes sign. Lower -dt or the load, or "
+             "raise -bond_rmax / -bond_k",
+             ps->gid[i], ps->gid[j], s->step, s->t, fabs(r - p->r0[ty]), p->rmax[ty], r, p->r0[ty],
+             worst);
   if (worst >= 0.95 && !d->warned_stretch) {
     PetscCall(PetscPrintf(PETSC_COMM_SELF,
                           "WARNING: nonlinear bond gid %" PetscInt64_FMT "-%" PetscInt64_FMT
-                          " stretched to %.3f r_max at step %" PetscInt_FMT ", t = %g s (the run stops at r_max; "
+                          " stretched to %.3f r_max at step %" PetscInt_FMT
+                          ", t = %g s (the run stops at r_max; "
                           "this warning is printed once)\n",
                           ps->gid[i], ps->gid[j], worst, s->step, s->t));
     d->warned_stretch = PETSC_TRUE;
@@ -164,16 +175,20 @@ static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) 
   double local = INFINITY, limit, f_local = 0, f;
   PetscInt which;
   PetscFunctionBeginUser;
-  if (!isfinite(p->m_min)) PetscFunctionReturn(0);
+  if (!isfinite(p->m_min))
+    PetscFunctionReturn(0);
   PetscCall(bond_ensure_resolved(s));
   /* per type, at that type's largest current stretch (rest when it has none here) */
-  for (PetscInt ty = 0; ty < s->topo->n_bond_types; ty++) local = PetscMin(local, bond_nonlinear_limit(p, ty, 0.0));
+  for (PetscInt ty = 0; ty < s->topo->n_bond_types; ty++)
+    local = PetscMin(local, bond_nonlinear_limit(p, ty, 0.0));
   f_local = bond_nonlinear_max_stretch(p, s->topo, &s->ps, &which);
-  if (which >= 0) local = PetscMin(local, bond_nonlinear_limit(p, s->topo->bond_ltype[which], f_local));
+  if (which >= 0)
+    local = PetscMin(local, bond_nonlinear_limit(p, s->topo->bond_ltype[which], f_local));
   PetscCallMPI(MPI_Allreduce(&local, &limit, 1, MPI_DOUBLE, MPI_MIN, s->comm));
   PetscCallMPI(MPI_Allreduce(&f_local, &f, 1, MPI_DOUBLE, MPI_MAX, s->comm));
   char formula[96];
-  PetscCall(PetscSNPrintf(formula, sizeof(formula), "0.2 sqrt(m/k_eff), k_eff = U'' at max stretch %.2f r_max", f));
+  PetscCall(PetscSNPrintf(formula, sizeof(formula),
+                          "0.2 sqrt(m/k_eff), k_eff = U'' at max stretch %.2f r_max", f));
   PetscCall(dt_limits_add(l, "bond nonlinear", formula, limit));
   PetscFunctionReturn(0);
 }
@@ -181,13 +196,15 @@ static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) 
 static PetscErrorCode bond_nonlinear_view(module *self, sim *s, PetscViewer v) {
   const bond_params *p = self->data;
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(v,
-                                   "bond_nonlinear: %" PetscInt_FMT " bonds, U = k_b x^2/(r_max^2 - x^2); warn at 0.95 "
-                                   "r_max, stop at r_max; 1-2/1-3 partners %s pair sums\n",
-                                   s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
+  PetscCall(PetscViewerASCIIPrintf(
+      v,
+      "bond_nonlinear: %" PetscInt_FMT " bonds, U = k_b x^2/(r_max^2 - x^2); warn at 0.95 "
+      "r_max, stop at r_max; 1-2/1-3 partners %s pair sums\n",
+      s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
   for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
-    PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": k_b = %g J, r0 = %g m, r_max = %g m\n", t, p->k[t],
-                                     p->r0[t], p->rmax[t]));
+    PetscCall(PetscViewerASCIIPrintf(
+        v, "  bond type %" PetscInt_FMT ": k_b = %g J, r0 = %g m, r_max = %g m\n", t, p->k[t],
+        p->r0[t], p->rmax[t]));
   PetscFunctionReturn(0);
 }
 

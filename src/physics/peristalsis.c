@@ -40,16 +40,18 @@ typedef struct {
   double damping;     /* gamma [1/s] */
   double ramp;        /* switching time as a fraction of t_w */
   char file[PETSC_MAX_PATH_LEN];
-  PetscInt rows;      /* R */
-  signed char *S;     /* R x n_pockets */
-  PetscInt n_seg;     /* tagged solids over all ranks */
+  PetscInt rows;  /* R */
+  signed char *S; /* R x n_pockets */
+  PetscInt n_seg; /* tagged solids over all ranks */
 } peri_data;
 
 int peristalsis_spec_value(PetscInt n_pockets, PetscInt H, PetscInt r, PetscInt k) {
   const PetscInt R = 2 * (n_pockets - 1) + 5;
   const PetscInt down = ((2 * k - 1) % R + R) % R, up = (((r - 2 * k - 1) % R) + R) % R;
-  if (r == down) return -1;
-  if (up < H) return 1;
+  if (r == down)
+    return -1;
+  if (up < H)
+    return 1;
   return 0;
 }
 
@@ -64,73 +66,96 @@ PetscErrorCode peristalsis_set_geometry(module *m, PetscInt n_pockets, double b,
 
 PetscInt peristalsis_subperiod(const module *m, double t) {
   const peri_data *d = m->data;
-  if (t < d->delay || d->rows == 0) return -1;
-  /* the step's t = step dt carries round-off: a boundary hit within 1e-9 t_w counts as the later sub-period */
+  if (t < d->delay || d->rows == 0)
+    return -1;
+  /* the step's t = step dt carries round-off: a boundary hit within 1e-9 t_w counts as the later
+   * sub-period */
   const double u = (t - d->delay) / d->t_w + 1e-9;
   const PetscInt64 n = (PetscInt64)floor(u);
-  if (d->waves > 0 && n >= (PetscInt64)d->waves * d->rows) return -1;
+  if (d->waves > 0 && n >= (PetscInt64)d->waves * d->rows)
+    return -1;
   return (PetscInt)(n % d->rows);
 }
 
 int peristalsis_value(const module *m, double t, PetscInt k) {
   const peri_data *d = m->data;
   const PetscInt r = peristalsis_subperiod(m, t);
-  if (r < 0 || k < 0 || k >= d->n_pockets) return 0;
+  if (r < 0 || k < 0 || k >= d->n_pockets)
+    return 0;
   return d->S[r * d->n_pockets + k];
 }
 
 double peristalsis_amplitude(const module *m, double t, PetscInt k) {
   const peri_data *d = m->data;
   const double now = peristalsis_value(m, t, k);
-  if (d->ramp <= 0 || t < d->delay) return now;
+  if (d->ramp <= 0 || t < d->delay)
+    return now;
   const double u = fmod((t - d->delay) / d->t_w + 1e-9, 1.0) / d->ramp;
-  if (u >= 1) return now;
+  if (u >= 1)
+    return now;
   const double before = peristalsis_value(m, t - d->t_w, k), w = u * u * (3 - 2 * u);
   return before + (now - before) * w;
 }
 
-PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscInt *H, PetscInt *rows, double *delay) {
+PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscInt *H,
+                               PetscInt *rows, double *delay) {
   const peri_data *d = m->data;
   PetscFunctionBeginUser;
-  if (t_w) *t_w = d->t_w;
-  if (T_w) *T_w = d->rows * d->t_w;
-  if (H) *H = d->H;
-  if (rows) *rows = d->rows;
-  if (delay) *delay = d->delay;
+  if (t_w)
+    *t_w = d->t_w;
+  if (T_w)
+    *T_w = d->rows * d->t_w;
+  if (H)
+    *H = d->H;
+  if (rows)
+    *rows = d->rows;
+  if (delay)
+    *delay = d->delay;
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode peristalsis_set_from_options(module *self, sim *s) {
   peri_data *d = self->data;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, "Peristaltic wave on the membrane segments (module peristalsis)", NULL);
-  PetscCall(PetscOptionsReal("-peristalsis_tw", "Sub-period t_w [s]; wave period T_w = (2N+5) t_w", NULL, d->t_w,
-                             &d->t_w, NULL));
-  PetscCall(PetscOptionsInt("-peristalsis_h", "Squeezing sub-periods H (2 = original wave, 5 = new wave) [1]", NULL,
+  PetscOptionsBegin(s->comm, NULL, "Peristaltic wave on the membrane segments (module peristalsis)",
+                    NULL);
+  PetscCall(PetscOptionsReal("-peristalsis_tw", "Sub-period t_w [s]; wave period T_w = (2N+5) t_w",
+                             NULL, d->t_w, &d->t_w, NULL));
+  PetscCall(PetscOptionsInt("-peristalsis_h",
+                            "Squeezing sub-periods H (2 = original wave, 5 = new wave) [1]", NULL,
                             d->H, &d->H, NULL));
-  PetscCall(PetscOptionsInt("-peristalsis_waves", "Number of waves (0 = repeat until -t_end) [1]", NULL, d->waves,
-                            &d->waves, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_delay", "Time before the first wave (the liquid settles) [s]", NULL,
-                             d->delay, &d->delay, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_force", "Wave force F per membrane particle at a segment's centre [N]",
-                             NULL, d->force, &d->force, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_support",
-                             "Support spring k_s per membrane particle towards its initial position [N/m]", NULL,
-                             d->support, &d->support, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_damping", "Damping rate gamma on membrane particles [1/s]", NULL,
-                             d->damping, &d->damping, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_ramp",
-                             "Switching time of the force between sub-periods, fraction of t_w (smoothstep) [1]", NULL,
-                             d->ramp, &d->ramp, NULL));
-  PetscCall(PetscOptionsString("-peristalsis_schedule",
-                               "File of the 0/+1/-1 schedule: one row per sub-period, one column per pocket", NULL,
-                               d->file, d->file, sizeof(d->file), NULL));
+  PetscCall(PetscOptionsInt("-peristalsis_waves", "Number of waves (0 = repeat until -t_end) [1]",
+                            NULL, d->waves, &d->waves, NULL));
+  PetscCall(PetscOptionsReal("-peristalsis_delay",
+                             "Time before the first wave (the liquid settles) [s]", NULL, d->delay,
+                             &d->delay, NULL));
+  PetscCall(PetscOptionsReal("-peristalsis_force",
+                             "Wave force F per membrane particle at a segment's centre [N]", NULL,
+                             d->force, &d->force, NULL));
+  PetscCall(PetscOptionsReal(
+      "-peristalsis_support",
+      "Support spring k_s per membrane particle towards its initial position [N/m]", NULL,
+      d->support, &d->support, NULL));
+  PetscCall(PetscOptionsReal("-peristalsis_damping",
+                             "Damping rate gamma on membrane particles [1/s]", NULL, d->damping,
+                             &d->damping, NULL));
+  PetscCall(PetscOptionsReal(
+      "-peristalsis_ramp",
+      "Switching time of the force between sub-periods, fraction of t_w (smoothstep) [1]", NULL,
+      d->ramp, &d->ramp, NULL));
+  PetscCall(PetscOptionsString(
+      "-peristalsis_schedule",
+      "File of the 0/+1/-1 schedule: one row per sub-period, one column per pocket", NULL, d->file,
+      d->file, sizeof(d->file), NULL));
   PetscOptionsEnd();
-  PetscCheck(d->t_w > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-peristalsis_tw must be > 0 (got %g s)", d->t_w);
-  PetscCheck(d->H >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-peristalsis_h must be >= 1 (got %" PetscInt_FMT ")", d->H);
+  PetscCheck(d->t_w > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_tw must be > 0 (got %g s)", d->t_w);
+  PetscCheck(d->H >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_h must be >= 1 (got %" PetscInt_FMT ")", d->H);
   PetscCheck(d->waves >= 0 && d->delay >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-peristalsis_waves and -peristalsis_delay must be >= 0");
-  PetscCheck(d->ramp >= 0 && d->ramp <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-peristalsis_ramp must lie in [0, 1]");
+  PetscCheck(d->ramp >= 0 && d->ramp <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_ramp must lie in [0, 1]");
   PetscCheck(d->support >= 0 && d->damping >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-peristalsis_support and -peristalsis_damping must be >= 0");
   PetscFunctionReturn(0);
@@ -144,24 +169,31 @@ static PetscErrorCode peristalsis_read_file(peri_data *d, MPI_Comm comm) {
   PetscInt cap = 64, rows = 0, lineno = 0;
   signed char *S;
   PetscFunctionBeginUser;
-  PetscCheck(f, comm, PETSC_ERR_FILE_OPEN, "-peristalsis_schedule %s: cannot open: %s", d->file, strerror(errno));
+  PetscCheck(f, comm, PETSC_ERR_FILE_OPEN, "-peristalsis_schedule %s: cannot open: %s", d->file,
+             strerror(errno));
   PetscCall(PetscMalloc1(cap * d->n_pockets, &S));
   while (fgets(line, sizeof(line), f)) {
     lineno++;
     char *c = strchr(line, '#');
-    if (c) *c = 0;
+    if (c)
+      *c = 0;
     PetscInt n = 0;
     char *p = line;
     for (;;) {
-      while (*p && (isspace((unsigned char)*p) || *p == ',')) p++;
-      if (!*p) break;
+      while (*p && (isspace((unsigned char)*p) || *p == ','))
+        p++;
+      if (!*p)
+        break;
       char *end;
       const long v = strtol(p, &end, 10);
-      const PetscBool ok = end != p && (v == -1 || v == 0 || v == 1) && (!*end || isspace((unsigned char)*end) || *end == ',');
-      if (!ok) fclose(f);
+      const PetscBool ok = end != p && (v == -1 || v == 0 || v == 1) &&
+                           (!*end || isspace((unsigned char)*end) || *end == ',');
+      if (!ok)
+        fclose(f);
       PetscCheck(ok, comm, PETSC_ERR_FILE_UNEXPECTED,
-                 "-peristalsis_schedule %s:%" PetscInt_FMT ": value %" PetscInt_FMT " is not -1, 0 or 1", d->file,
-                 lineno, n + 1);
+                 "-peristalsis_schedule %s:%" PetscInt_FMT ": value %" PetscInt_FMT
+                 " is not -1, 0 or 1",
+                 d->file, lineno, n + 1);
       if (n < d->n_pockets) {
         if (rows == cap) {
           signed char *T;
@@ -176,15 +208,19 @@ static PetscErrorCode peristalsis_read_file(peri_data *d, MPI_Comm comm) {
       n++;
       p = end;
     }
-    if (n == 0) continue;
-    if (n != d->n_pockets) fclose(f);
+    if (n == 0)
+      continue;
+    if (n != d->n_pockets)
+      fclose(f);
     PetscCheck(n == d->n_pockets, comm, PETSC_ERR_FILE_UNEXPECTED,
-               "-peristalsis_schedule %s:%" PetscInt_FMT ": %" PetscInt_FMT " values, expected one per pocket (%" PetscInt_FMT ")",
+               "-peristalsis_schedule %s:%" PetscInt_FMT ": %" PetscInt_FMT
+               " values, expected one per pocket (%" PetscInt_FMT ")",
                d->file, lineno, n, d->n_pockets);
     rows++;
   }
   fclose(f);
-  PetscCheck(rows > 0, comm, PETSC_ERR_FILE_UNEXPECTED, "-peristalsis_schedule %s: no rows", d->file);
+  PetscCheck(rows > 0, comm, PETSC_ERR_FILE_UNEXPECTED, "-peristalsis_schedule %s: no rows",
+             d->file);
   d->S = S;
   d->rows = rows;
   PetscFunctionReturn(0);
@@ -197,7 +233,8 @@ static PetscErrorCode peristalsis_setup(module *self, sim *s) {
   PetscCheck(d->n_pockets > 0 && d->b > 0, s->comm, PETSC_ERR_ORDER,
              "peristalsis: the scene must call peristalsis_set_geometry");
   PetscCall(PetscFree(d->S));
-  if (d->file[0]) PetscCall(peristalsis_read_file(d, s->comm));
+  if (d->file[0])
+    PetscCall(peristalsis_read_file(d, s->comm));
   else {
     d->rows = 2 * (d->n_pockets - 1) + 5;
     PetscCall(PetscMalloc1(d->rows * d->n_pockets, &d->S));
@@ -220,15 +257,18 @@ static PetscErrorCode peristalsis_compute(module *self, sim *s) {
   const PetscInt np = d->n_pockets;
   double *amp; /* per pocket: S[r][k] blended with S[r-1][k] over the ramp */
   PetscCall(PetscMalloc1(np, &amp));
-  for (PetscInt k = 0; k < np; k++) amp[k] = peristalsis_amplitude(self, s->t, k);
+  for (PetscInt k = 0; k < np; k++)
+    amp[k] = peristalsis_amplitude(self, s->t, k);
   const double F = d->force, ks = d->support, g = d->damping, inv_b = 1.0 / d->b, xl = d->x_left;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID) continue;
+    if (ps->type[i] != PTYPE_SOLID)
+      continue;
     const double im = 1.0 / ps->mass[i];
     ps->a[i][0] -= ks * (ps->x[i][0] - ps->x0[i][0]) * im + g * ps->v_est[i][0];
     ps->a[i][1] -= ks * (ps->x[i][1] - ps->x0[i][1]) * im + g * ps->v_est[i][1];
     const PetscInt k = ps->tag[i] - PERISTALSIS_TAG0;
-    if (k < 0 || k >= np || amp[k] == 0) continue;
+    if (k < 0 || k >= np || amp[k] == 0)
+      continue;
     const double sn = sin(M_PI * (ps->x0[i][0] - xl - k * d->b) * inv_b);
     ps->a[i][1] += amp[k] * F * sn * sn * im;
   }
@@ -243,11 +283,14 @@ static PetscErrorCode peristalsis_max_dt(module *self, sim *s, dt_limits *l) {
   double m_local = PETSC_MAX_REAL, m;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    if (s->ps.type[i] == PTYPE_SOLID) m_local = PetscMin(m_local, s->ps.mass[i]);
+    if (s->ps.type[i] == PTYPE_SOLID)
+      m_local = PetscMin(m_local, s->ps.mass[i]);
   PetscCallMPI(MPI_Allreduce(&m_local, &m, 1, MPI_DOUBLE, MPI_MIN, s->comm));
   if (d->support > 0 && m < PETSC_MAX_REAL)
-    PetscCall(dt_limits_add(l, "peristalsis support", "0.2 sqrt(m/k_s)", 0.2 * sqrt(m / d->support)));
-  if (d->damping > 0) PetscCall(dt_limits_add(l, "peristalsis damping", "0.2/gamma", 0.2 / d->damping));
+    PetscCall(
+        dt_limits_add(l, "peristalsis support", "0.2 sqrt(m/k_s)", 0.2 * sqrt(m / d->support)));
+  if (d->damping > 0)
+    PetscCall(dt_limits_add(l, "peristalsis damping", "0.2/gamma", 0.2 / d->damping));
   PetscFunctionReturn(0);
 }
 
@@ -256,11 +299,15 @@ static PetscErrorCode peristalsis_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(PetscViewerASCIIPrintf(v,
-                                   "peristalsis: %" PetscInt_FMT " pockets of b = %g m, t_w = %g s, %s schedule of %" PetscInt_FMT
-                                   " rows (T_w = %g s, H = %" PetscInt_FMT "), waves %" PetscInt_FMT " (0 = until t_end), delay %g s\n"
-                                   "  force %g N per particle on %" PetscInt_FMT " segment particles, support %g N/m, damping %g 1/s\n",
-                                   d->n_pockets, d->b, d->t_w, d->file[0] ? d->file : "generated", d->rows,
-                                   d->rows * d->t_w, d->H, d->waves, d->delay, d->force, d->n_seg, d->support, d->damping));
+                                   "peristalsis: %" PetscInt_FMT
+                                   " pockets of b = %g m, t_w = %g s, %s schedule of %" PetscInt_FMT
+                                   " rows (T_w = %g s, H = %" PetscInt_FMT "), waves %" PetscInt_FMT
+                                   " (0 = until t_end), delay %g s\n"
+                                   "  force %g N per particle on %" PetscInt_FMT
+                                   " segment particles, support %g N/m, damping %g 1/s\n",
+                                   d->n_pockets, d->b, d->t_w, d->file[0] ? d->file : "generated",
+                                   d->rows, d->rows * d->t_w, d->H, d->waves, d->delay, d->force,
+                                   d->n_seg, d->support, d->damping));
   PetscFunctionReturn(0);
 }
 

@@ -52,23 +52,31 @@ PetscErrorCode repulsion_set_default(module *m, double K, double rstar, PetscInt
 static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
   repulsion_data *d = self->data;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, "Solid/wall-fluid repulsion f = K[(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 (module repulsion)",
-                    NULL);
+  PetscOptionsBegin(
+      s->comm, NULL,
+      "Solid/wall-fluid repulsion f = K[(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 (module repulsion)",
+      NULL);
   PetscCall(PetscOptionsReal("-repulsion_k", "Repulsion strength K [J]", NULL, d->K, &d->K, NULL));
-  PetscCall(PetscOptionsReal("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar, &d->rstar, NULL));
-  PetscCall(PetscOptionsInt("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL, d->p1, &d->p1, NULL));
-  PetscCall(PetscOptionsInt("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL, d->p2, &d->p2, NULL));
-  PetscCall(PetscOptionsBool("-repulsion_bodies",
-                             "Also repel non-fluid particles of different solid bodies (scenes that number bodies)",
-                             NULL, d->bodies, &d->bodies, NULL));
+  PetscCall(PetscOptionsReal("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar,
+                             &d->rstar, NULL));
+  PetscCall(PetscOptionsInt("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL,
+                            d->p1, &d->p1, NULL));
+  PetscCall(PetscOptionsInt("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL,
+                            d->p2, &d->p2, NULL));
+  PetscCall(PetscOptionsBool(
+      "-repulsion_bodies",
+      "Also repel non-fluid particles of different solid bodies (scenes that number bodies)", NULL,
+      d->bodies, &d->bodies, NULL));
   PetscOptionsEnd();
   PetscCheck(!d->bodies || fields_enabled("body"), s->comm, PETSC_ERR_ARG_INCOMP,
              "-repulsion_bodies: scene '%s' does not number its solid bodies", s->scn->name);
-  PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)", d->K);
-  PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_rstar must be > 0 (got %g m)", d->rstar);
+  PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)",
+             d->K);
+  PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-repulsion_rstar must be > 0 (got %g m)", d->rstar);
   PetscCheck(d->p2 >= 1 && d->p1 > d->p2 && d->p1 <= 24, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-repulsion_p1 and -repulsion_p2 must satisfy 24 >= p1 > p2 >= 1 (got %" PetscInt_FMT ", %" PetscInt_FMT
-             "): p1 <= p2 would attract",
+             "-repulsion_p1 and -repulsion_p2 must satisfy 24 >= p1 > p2 >= 1 (got %" PetscInt_FMT
+             ", %" PetscInt_FMT "): p1 <= p2 would attract",
              d->p1, d->p2);
   self->reach = d->rstar;
   PetscFunctionReturn(0);
@@ -86,11 +94,12 @@ typedef struct {
 /* Does the pair (i, j) repel? One liquid (fluid or clot: a clot particle was
  * liquid and stays among it) and one solid/wall; with bodies, also two solid
  * or wall particles of different bodies. */
-static inline __attribute__((always_inline)) int repulsion_acts(int bodies, const PetscInt *type,
-                                                                const PetscInt *body, PetscInt i,
-                                                                PetscInt j) {
-  const int fi = type[i] == PTYPE_FLUID || type[i] == PTYPE_CLOT, fj = type[j] == PTYPE_FLUID || type[j] == PTYPE_CLOT;
-  if (fi != fj) return 1;
+static inline __attribute__((always_inline)) int
+repulsion_acts(int bodies, const PetscInt *type, const PetscInt *body, PetscInt i, PetscInt j) {
+  const int fi = type[i] == PTYPE_FLUID || type[i] == PTYPE_CLOT,
+            fj = type[j] == PTYPE_FLUID || type[j] == PTYPE_CLOT;
+  if (fi != fj)
+    return 1;
   return bodies && !fi && body[i] != body[j];
 }
 
@@ -106,10 +115,12 @@ static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int 
   double r2_min = INFINITY;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
-    if (!repulsion_acts(bodies, type, body, i, j)) continue;
+    if (!repulsion_acts(bodies, type, body, i, j))
+      continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r2 = d[0] * d[0] + d[1] * d[1];
-    if (r2 >= rs2) continue;
+    if (r2 >= rs2)
+      continue;
     r2_min = r2 < r2_min ? r2 : r2_min;
     const double fr = repulsion_iact(K, rstar, p1, p2, r2);
     const double fi = fr / mass[i], fj = fr / mass[j];
@@ -121,9 +132,15 @@ static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int 
   return r2_min;
 }
 
-static double sweep_4_2(const repulsion_args *A) { return repulsion_sweep(4, 2, 0, A); }
-static double sweep_12_6(const repulsion_args *A) { return repulsion_sweep(12, 6, 0, A); }
-static double sweep_4_2_bodies(const repulsion_args *A) { return repulsion_sweep(4, 2, 1, A); }
+static double sweep_4_2(const repulsion_args *A) {
+  return repulsion_sweep(4, 2, 0, A);
+}
+static double sweep_12_6(const repulsion_args *A) {
+  return repulsion_sweep(12, 6, 0, A);
+}
+static double sweep_4_2_bodies(const repulsion_args *A) {
+  return repulsion_sweep(4, 2, 1, A);
+}
 
 static PetscErrorCode repulsion_compute(module *self, sim *s) {
   repulsion_data *d = self->data;
@@ -141,11 +158,16 @@ static PetscErrorCode repulsion_compute(module *self, sim *s) {
                             .K = d->K,
                             .rstar = d->rstar};
   if (d->bodies) {
-    if (d->p1 == 4 && d->p2 == 2) d->r2_min = sweep_4_2_bodies(&A);
-    else d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
-  } else if (d->p1 == 4 && d->p2 == 2) d->r2_min = sweep_4_2(&A);
-  else if (d->p1 == 12 && d->p2 == 6) d->r2_min = sweep_12_6(&A);
-  else d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
+    if (d->p1 == 4 && d->p2 == 2)
+      d->r2_min = sweep_4_2_bodies(&A);
+    else
+      d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
+  } else if (d->p1 == 4 && d->p2 == 2)
+    d->r2_min = sweep_4_2(&A);
+  else if (d->p1 == 12 && d->p2 == 6)
+    d->r2_min = sweep_12_6(&A);
+  else
+    d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
   PetscCall(PetscLogFlops(10.0 * (double)s->cel.n_pairs));
   PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -158,7 +180,8 @@ static PetscErrorCode repulsion_energy_sum(module *self, sim *s, double *e) {
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
-    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j)) continue;
+    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j))
+      continue;
     const double w = 0.5 * ((i < ps->n_owned) + (j < ps->n_owned)); /* share owned here */
     local += w * repulsion_energy(d->K, d->rstar, (int)d->p1, (int)d->p2,
                                   hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]));
@@ -175,10 +198,12 @@ static PetscErrorCode repulsion_virial(module *self, sim *s, double (*W)[3]) {
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
-    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j)) continue;
+    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j))
+      continue;
     const double r[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double r2 = r[0] * r[0] + r[1] * r[1];
-    if (r2 >= rs2) continue;
+    if (r2 >= rs2)
+      continue;
     const double fr = repulsion_iact(d->K, d->rstar, (int)d->p1, (int)d->p2, r2);
     virial_pair_add(W, i, j, fr, r);
   }
@@ -193,8 +218,10 @@ static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
   if (!d->have_masses) {
     double local[2] = {INFINITY, INFINITY};
     for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-      if (s->ps.type[i] == PTYPE_FLUID) local[0] = PetscMin(local[0], s->ps.mass[i]);
-      if (s->ps.type[i] == PTYPE_SOLID) local[1] = PetscMin(local[1], s->ps.mass[i]);
+      if (s->ps.type[i] == PTYPE_FLUID)
+        local[0] = PetscMin(local[0], s->ps.mass[i]);
+      if (s->ps.type[i] == PTYPE_SOLID)
+        local[1] = PetscMin(local[1], s->ps.mass[i]);
     }
     PetscCallMPI(MPI_Allreduce(local, d->m_min, 2, MPI_DOUBLE, MPI_MIN, s->comm));
     d->have_masses = PETSC_TRUE;
@@ -202,11 +229,13 @@ static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
   PetscCallMPI(MPI_Allreduce(&d->r2_min, &m[2], 1, MPI_DOUBLE, MPI_MIN, s->comm));
   m[0] = d->m_min[0];
   m[1] = d->m_min[1];
-  if (!isfinite(m[0]) || d->K <= 0) PetscFunctionReturn(0);
+  if (!isfinite(m[0]) || d->K <= 0)
+    PetscFunctionReturn(0);
   /* against a wall the fluid particle moves alone; against a solid, both do;
    * two solids of different bodies: half the solid mass */
   double mu = isfinite(m[1]) ? m[0] * m[1] / (m[0] + m[1]) : m[0];
-  if (d->bodies && isfinite(m[1])) mu = PetscMin(mu, 0.5 * m[1]);
+  if (d->bodies && isfinite(m[1]))
+    mu = PetscMin(mu, 0.5 * m[1]);
   /* -dF/dr = K [(p1+1) s^p1 - (p2+1) s^p2]/r^2 with s = r* over r: K (p1-p2)/r*^2 at r*,
    * stiffer at the closest approach of the last force evaluation */
   double k = d->K * (double)(d->p1 - d->p2) / (d->rstar * d->rstar);
@@ -218,7 +247,8 @@ static PetscErrorCode repulsion_max_dt(module *self, sim *s, dt_limits *l) {
                            m[2];
     k = PetscMax(k, k_close);
   }
-  PetscCall(dt_limits_add(l, "repulsion", "0.2 sqrt(mu/k), k = -dF/dr at the closest approach (>= r*)",
+  PetscCall(dt_limits_add(l, "repulsion",
+                          "0.2 sqrt(mu/k), k = -dF/dr at the closest approach (>= r*)",
                           SPRING_DT_FACTOR * sqrt(mu / k)));
   PetscFunctionReturn(0);
 }
@@ -227,10 +257,11 @@ static PetscErrorCode repulsion_view(module *self, sim *s, PetscViewer v) {
   const repulsion_data *d = self->data;
   PetscFunctionBeginUser;
   (void)s;
-  PetscCall(PetscViewerASCIIPrintf(v,
-                                   "repulsion: solid/wall-fluid%s, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
-                                   ", p2 = %" PetscInt_FMT "\n",
-                                   d->bodies ? " and between solid bodies" : "", d->K, d->rstar, d->p1, d->p2));
+  PetscCall(PetscViewerASCIIPrintf(
+      v,
+      "repulsion: solid/wall-fluid%s, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
+      ", p2 = %" PetscInt_FMT "\n",
+      d->bodies ? " and between solid bodies" : "", d->K, d->rstar, d->p1, d->p2));
   PetscFunctionReturn(0);
 }
 

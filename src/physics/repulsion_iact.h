@@ -10,7 +10,8 @@
 /* s^p for a small positive integer p (unrolled when p is a constant) */
 static inline double repulsion_ipow(double s, int p) {
   double r = 1.0;
-  for (int k = 0; k < p; k++) r *= s;
+  for (int k = 0; k < p; k++)
+    r *= s;
   return r;
 }
 
@@ -21,7 +22,8 @@ static inline double repulsion_iact(double K, double rstar, int p1, int p2, doub
 }
 
 static inline double repulsion_energy(double K, double rstar, int p1, int p2, double r) {
-  if (r >= rstar) return 0.0;
+  if (r >= rstar)
+    return 0.0;
   const double s = rstar / r;
   return K * ((repulsion_ipow(s, p1) - 1.0) / p1 - (repulsion_ipow(s, p2) - 1.0) / p2);
 }

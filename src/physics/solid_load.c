@@ -46,14 +46,17 @@ static PetscErrorCode solid_load_set_from_options(module *self, sim *s) {
   PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Point load and damping on solids (module solid_load)", NULL);
-  PetscCall(PetscOptionsRealArray("-solid_load_force", "Point load Fx,Fy [N] shared by the tagged particles (tip)", NULL,
+  PetscCall(PetscOptionsRealArray("-solid_load_force",
+                                  "Point load Fx,Fy [N] shared by the tagged particles (tip)", NULL,
                                   d->F, &n, &set));
-  PetscCall(PetscOptionsReal("-solid_damping", "Viscous damping rate gamma [1/s] on solid particles (a -= gamma v)",
+  PetscCall(PetscOptionsReal("-solid_damping",
+                             "Viscous damping rate gamma [1/s] on solid particles (a -= gamma v)",
                              NULL, d->gamma, &d->gamma, NULL));
   PetscOptionsEnd();
-  PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ, "-solid_load_force takes %d components Fx,Fy (got %d)", DMHS_DIM,
-             (int)n);
-  PetscCheck(d->gamma >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-solid_damping must be >= 0 (got %g 1/s)", d->gamma);
+  PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ,
+             "-solid_load_force takes %d components Fx,Fy (got %d)", DMHS_DIM, (int)n);
+  PetscCheck(d->gamma >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-solid_damping must be >= 0 (got %g 1/s)", d->gamma);
   PetscFunctionReturn(0);
 }
 
@@ -61,7 +64,8 @@ static PetscErrorCode solid_load_setup(module *self, sim *s) {
   solid_load_data *d = self->data;
   PetscInt local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) local += s->ps.tag[i] == SOLID_LOAD_TAG;
+  for (PetscInt i = 0; i < s->ps.n_owned; i++)
+    local += s->ps.tag[i] == SOLID_LOAD_TAG;
   PetscCallMPI(MPI_Allreduce(&local, &d->n_tagged, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCheck(d->n_tagged > 0 || (d->F[0] == 0 && d->F[1] == 0), s->comm, PETSC_ERR_ARG_WRONG,
              "-solid_load_force given but the scene tags no particle to carry it");
@@ -73,10 +77,12 @@ static PetscErrorCode solid_load_compute(module *self, sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.solid_load, 0, 0, 0, 0));
-  const double share[2] = {d->n_tagged ? d->F[0] / d->n_tagged : 0, d->n_tagged ? d->F[1] / d->n_tagged : 0};
+  const double share[2] = {d->n_tagged ? d->F[0] / d->n_tagged : 0,
+                           d->n_tagged ? d->F[1] / d->n_tagged : 0};
   const double g = d->gamma;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID) continue;
+    if (ps->type[i] != PTYPE_SOLID)
+      continue;
     ps->a[i][0] -= g * ps->v_est[i][0];
     ps->a[i][1] -= g * ps->v_est[i][1];
     if (ps->tag[i] == SOLID_LOAD_TAG) {
@@ -96,7 +102,8 @@ static PetscErrorCode solid_load_energy(module *self, sim *s, double *e) {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] == PTYPE_SOLID && ps->tag[i] == SOLID_LOAD_TAG)
-      local -= (d->F[0] * (ps->x[i][0] - ps->x0[i][0]) + d->F[1] * (ps->x[i][1] - ps->x0[i][1])) / d->n_tagged;
+      local -= (d->F[0] * (ps->x[i][0] - ps->x0[i][0]) + d->F[1] * (ps->x[i][1] - ps->x0[i][1])) /
+               d->n_tagged;
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }
@@ -106,7 +113,8 @@ static PetscErrorCode solid_load_max_dt(module *self, sim *s, dt_limits *l) {
   const solid_load_data *d = self->data;
   PetscFunctionBeginUser;
   (void)s;
-  if (d->gamma > 0) PetscCall(dt_limits_add(l, "solid damping", "0.2/gamma", 0.2 / d->gamma));
+  if (d->gamma > 0)
+    PetscCall(dt_limits_add(l, "solid damping", "0.2/gamma", 0.2 / d->gamma));
   PetscFunctionReturn(0);
 }
 

@@ -6,9 +6,12 @@
 #include "dmhs/integrate.h"
 #include "sph_force.h"
 
-const char *const sph_kernel_names[] = {"lucy", "cubic", "wendland", "sph_kernel_kind", "SPH_KERNEL_", NULL};
-const char *const sph_eos_names[] = {"tait", "linear", "linear_shifted", "sph_eos_kind", "SPH_EOS_", NULL};
-const char *const sph_density_names[] = {"continuity", "summation", "sph_density_kind", "SPH_DENSITY_", NULL};
+const char *const sph_kernel_names[] = {"lucy",        "cubic", "wendland", "sph_kernel_kind",
+                                        "SPH_KERNEL_", NULL};
+const char *const sph_eos_names[] = {"tait",         "linear",   "linear_shifted",
+                                     "sph_eos_kind", "SPH_EOS_", NULL};
+const char *const sph_density_names[] = {"continuity", "summation", "sph_density_kind",
+                                         "SPH_DENSITY_", NULL};
 const char *const sph_wall_names[] = {"adami", "quadratic", "sph_wall_kind", "SPH_WALL_", NULL};
 
 typedef struct {
@@ -23,27 +26,35 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "SPH liquid (module sph)", NULL);
   PetscCall(PetscOptionsEnum("-sph_kernel", "Kernel: lucy, cubic (B-spline), wendland (C2)", NULL,
-                             sph_kernel_names, (PetscEnum)sp->kernel, (PetscEnum *)&sp->kernel, NULL));
+                             sph_kernel_names, (PetscEnum)sp->kernel, (PetscEnum *)&sp->kernel,
+                             NULL));
   PetscCall(PetscOptionsReal("-sph_h", "Kernel support radius h [m] (W = 0 for r >= h)", NULL,
                              sp->h, &sp->h, NULL));
-  PetscCall(PetscOptionsReal("-sph_rho0", "Reference density [kg/m^3]", NULL, sp->rho0, &sp->rho0, NULL));
-  PetscCall(PetscOptionsReal("-sph_c0", "Reference sound speed [m/s]", NULL, sp->c0, &sp->c0, NULL));
-  PetscCall(PetscOptionsReal("-sph_nu", "Kinematic viscosity [m^2/s]", NULL, sp->nu, &sp->nu, NULL));
-  PetscCall(PetscOptionsEnum("-sph_eos", "Equation of state: tait, linear (c^2 rho), linear_shifted (c^2 (rho - rho0))",
-                             NULL, sph_eos_names, (PetscEnum)sp->eos, (PetscEnum *)&sp->eos, NULL));
+  PetscCall(
+      PetscOptionsReal("-sph_rho0", "Reference density [kg/m^3]", NULL, sp->rho0, &sp->rho0, NULL));
+  PetscCall(
+      PetscOptionsReal("-sph_c0", "Reference sound speed [m/s]", NULL, sp->c0, &sp->c0, NULL));
+  PetscCall(
+      PetscOptionsReal("-sph_nu", "Kinematic viscosity [m^2/s]", NULL, sp->nu, &sp->nu, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-sph_eos", "Equation of state: tait, linear (c^2 rho), linear_shifted (c^2 (rho - rho0))",
+      NULL, sph_eos_names, (PetscEnum)sp->eos, (PetscEnum *)&sp->eos, NULL));
   PetscCall(PetscOptionsEnum("-sph_density", "Density: continuity (d rho/dt) or summation", NULL,
-                             sph_density_names, (PetscEnum)sp->density, (PetscEnum *)&sp->density, NULL));
-  PetscCall(PetscOptionsReal("-sph_av_alpha", "Monaghan artificial viscosity alpha [1] (0 = off)", NULL,
-                             sp->av_alpha, &sp->av_alpha, NULL));
+                             sph_density_names, (PetscEnum)sp->density, (PetscEnum *)&sp->density,
+                             NULL));
+  PetscCall(PetscOptionsReal("-sph_av_alpha", "Monaghan artificial viscosity alpha [1] (0 = off)",
+                             NULL, sp->av_alpha, &sp->av_alpha, NULL));
   PetscCall(PetscOptionsReal("-sph_av_beta", "Monaghan artificial viscosity beta [1]", NULL,
                              sp->av_beta, &sp->av_beta, NULL));
   PetscCall(PetscOptionsReal("-sph_p_background",
-                             "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b (suppresses tensile voids)",
+                             "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b "
+                             "(suppresses tensile voids)",
                              NULL, sp->p_background, &sp->p_background, NULL));
-  PetscCall(PetscOptionsReal("-sph_delta",
-                             "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
-                             "Colagrossi 2009; 0 = off, 0.1 usual)",
-                             NULL, sp->delta, &sp->delta, NULL));
+  PetscCall(PetscOptionsReal(
+      "-sph_delta",
+      "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
+      "Colagrossi 2009; 0 = off, 0.1 usual)",
+      NULL, sp->delta, &sp->delta, NULL));
   PetscCall(PetscOptionsBool(
       "-sph_kernel_correction",
       "Corrected operators [1]: pressure gradient sum_j V_j (p_j - p_i) L_i grad W (exact for "
@@ -65,13 +76,15 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
-  PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)", sp->rho0);
+  PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)",
+             sp->rho0);
   PetscCheck(sp->c0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_c0 must be > 0 (got %g)", sp->c0);
-  PetscCheck(sp->nu >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_nu must be >= 0 (got %g)", sp->nu);
+  PetscCheck(sp->nu >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_nu must be >= 0 (got %g)",
+             sp->nu);
   PetscCheck(sp->av_alpha >= 0 && sp->av_beta >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_av_alpha and -sph_av_beta must be >= 0 (got %g, %g)", sp->av_alpha, sp->av_beta);
-  PetscCheck(sp->p_background >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_p_background must be >= 0 (got %g Pa)",
-             sp->p_background);
+  PetscCheck(sp->p_background >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_p_background must be >= 0 (got %g Pa)", sp->p_background);
   self->reach = sp->h;
   s->sph_enabled = PETSC_TRUE;
   PetscFunctionReturn(0);
@@ -96,10 +109,13 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
 static PetscErrorCode sph_compute(module *self, sim *s) {
   sph_data *d = self->data;
   PetscFunctionBeginUser;
-  if (s->sph.density == SPH_DENSITY_SUMMATION) PetscCall(sph_density_summation(s));
+  if (s->sph.density == SPH_DENSITY_SUMMATION)
+    PetscCall(sph_density_summation(s));
   PetscCall(sph_eos_compute(s));
-  if (d->has_walls) PetscCall(sph_wall_compute(s, d->wall));
-  else PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
+  if (d->has_walls)
+    PetscCall(sph_wall_compute(s, d->wall));
+  else
+    PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
   if (s->sph.kernel_correction)
     PetscCall(sph_correction_compute(s, &d->correction));
   if (s->sph.kernel_correction)
@@ -129,10 +145,13 @@ static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
   global[1] = PetscSqrtReal(global[1]);
   const double vmax_global = global[0];
   /* Monaghan's artificial viscosity widens the signal speed by 1.2 (alpha c0 + beta max|v|) */
-  const double signal = sp->c0 + vmax_global + 1.2 * (sp->av_alpha * sp->c0 + sp->av_beta * vmax_global);
-  PetscCall(dt_limits_add(l, "sph sound speed", "0.25 h_s/(c0 + max|v| [+ AV]), h_s = h/2", 0.25 * hs / signal));
+  const double signal =
+      sp->c0 + vmax_global + 1.2 * (sp->av_alpha * sp->c0 + sp->av_beta * vmax_global);
+  PetscCall(dt_limits_add(l, "sph sound speed", "0.25 h_s/(c0 + max|v| [+ AV]), h_s = h/2",
+                          0.25 * hs / signal));
   if (sp->nu > 0)
-    PetscCall(dt_limits_add(l, "sph viscosity", "0.125 h_s^2/nu, h_s = h/2", 0.125 * hs * hs / sp->nu));
+    PetscCall(
+        dt_limits_add(l, "sph viscosity", "0.125 h_s^2/nu, h_s = h/2", 0.125 * hs * hs / sp->nu));
   /* Monaghan's force criterion on the accelerations of the last force
    * evaluation (none before the first one) */
   if (global[1] > 0)
@@ -145,15 +164,18 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
   const sph_params *sp = &s->sph;
   PetscFunctionBeginUser;
   (void)self;
-  PetscCall(PetscViewerASCIIPrintf(v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
-                                   sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
+  PetscCall(PetscViewerASCIIPrintf(
+      v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
+      sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
   PetscCall(PetscViewerASCIIPrintf(v,
                                    "sph: eos %s, background pressure %g Pa, density %s, artificial "
                                    "viscosity alpha = %g beta = %g, walls: %s extrapolation\n",
                                    sph_eos_names[sp->eos], sp->p_background,
                                    sph_density_names[sp->density], sp->av_alpha, sp->av_beta,
                                    sph_wall_names[sp->wall]));
-  if (sp->delta > 0) PetscCall(PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
+  if (sp->delta > 0)
+    PetscCall(
+        PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
   if (sp->kernel_correction)
     PetscCall(PetscViewerASCIIPrintf(v,
                                      "sph: kernel correction: pressure gradient exact for linear p "

@@ -15,11 +15,13 @@ SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
   double w0, dw0;
   sph_kernel_eval(kernel, 2, norm, inv_h, 0.0, &w0, &dw0);
   for (PetscInt i = 0; i < ps->n_owned + ps->n_ghost; i++)
-    if (ps->type[i] != PTYPE_WALL) rho[i] = mass[i] * w0;
+    if (ps->type[i] != PTYPE_WALL)
+      rho[i] = mass[i] * w0;
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], r2 = dx * dx + dy * dy;
-    if (r2 * inv_h * inv_h >= 1.0) continue; /* in the list's skin only */
+    if (r2 * inv_h * inv_h >= 1.0)
+      continue; /* in the list's skin only */
     double w, dwdr;
     sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r2), &w, &dwdr);
     /* wall rows are overwritten by the wall pass; ghost rows are refreshed below */
@@ -28,9 +30,15 @@ SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
   }
 }
 
-static void density_lucy(sim *s, double n) { density_sweep(SPH_KERNEL_LUCY, s, n); }
-static void density_cubic(sim *s, double n) { density_sweep(SPH_KERNEL_CUBIC, s, n); }
-static void density_wendland(sim *s, double n) { density_sweep(SPH_KERNEL_WENDLAND, s, n); }
+static void density_lucy(sim *s, double n) {
+  density_sweep(SPH_KERNEL_LUCY, s, n);
+}
+static void density_cubic(sim *s, double n) {
+  density_sweep(SPH_KERNEL_CUBIC, s, n);
+}
+static void density_wendland(sim *s, double n) {
+  density_sweep(SPH_KERNEL_WENDLAND, s, n);
+}
 
 PetscErrorCode sph_density_summation(sim *s) {
   static const char *const refreshed[] = {"rho"};

@@ -12,7 +12,8 @@ PetscErrorCode sph_eos_compute(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_eos, 0, 0, 0, 0));
   for (PetscInt i = 0; i < n; i++)
-    if (ps->type[i] != PTYPE_WALL) ps->p[i] = sph_eos_pressure_bg(sp, ps->rho[i]);
+    if (ps->type[i] != PTYPE_WALL)
+      ps->p[i] = sph_eos_pressure_bg(sp, ps->rho[i]);
   PetscCall(PetscLogFlops(8.0 * (double)n));
   PetscCall(PetscLogEventEnd(events.sph_eos, 0, 0, 0, 0));
   PetscFunctionReturn(0);

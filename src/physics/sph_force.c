@@ -30,7 +30,7 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
                             int corrected, const force_args *A) {
   const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
   const double(*restrict x)[2] = A->x, (*restrict v_est)[2] = A->v_est,
-        (*restrict v_visc)[2] = A->v_visc;
+                         (*restrict v_visc)[2] = A->v_visc;
   const double *restrict mass = A->mass, *restrict rho = A->rho;
   const double *restrict P = A->P, *restrict inv_rho = A->inv_rho;
   double(*restrict a)[2] = A->a;
@@ -78,8 +78,8 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
     if (artificial || continuity) {
       const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
       if (artificial)
-        sph_force_iact_artificial_viscosity(rij, r, dwdr, rho[i], rho[j], vij, A->alpha,
-                                            A->beta, A->c0, h, T);
+        sph_force_iact_artificial_viscosity(rij, r, dwdr, rho[i], rho[j], vij, A->alpha, A->beta,
+                                            A->c0, h, T);
       if (continuity) {
         if (!corrected) { /* else -rho_i div_i per particle (sph_force_compute) */
           const double q = sph_continuity_iact(rij, r, dwdr, vij);

@@ -21,7 +21,7 @@ typedef struct {
   PetscInt n_alloc;
   sph_moments *mom;
   sph_correction *corr;
-  double *vol;       /* m/rho per row, negative on rows that need no moments */
+  double *vol;        /* m/rho per row, negative on rows that need no moments */
   double (*e_div)[2]; /* v_div - v_visc per row (sph_correction.c) */
   PetscInt n_pair_alloc;
   double (*pair)[2]; /* per pair of the list: (dW/dr)/r and 1/r^2, 0 beyond h */

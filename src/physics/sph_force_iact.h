@@ -34,12 +34,12 @@ SPH_INLINE void sph_force_iact(const double rij[2], double r, double dwdr, doubl
 
 /* Adds the Monaghan term to T; vij is the (predicted) relative velocity. */
 SPH_INLINE void sph_force_iact_artificial_viscosity(const double rij[2], double r, double dwdr,
-                                                    double rho_i, double rho_j,
-                                                    const double vij[2], double alpha,
-                                                    double beta, double c0, double h,
+                                                    double rho_i, double rho_j, const double vij[2],
+                                                    double alpha, double beta, double c0, double h,
                                                     double T[2]) {
   const double vr = vij[0] * rij[0] + vij[1] * rij[1];
-  if (vr >= 0.0) return;
+  if (vr >= 0.0)
+    return;
   const double mu = h * vr / (r * r + 0.01 * h * h);
   const double Pi = (-alpha * c0 * mu + beta * mu * mu) / (0.5 * (rho_i + rho_j));
   const double grad = dwdr / r;

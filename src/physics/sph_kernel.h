@@ -22,13 +22,19 @@ SPH_INLINE double sph_kernel_norm(sph_kernel_kind kind, int dim, double h) {
   const double pi = M_PI;
   switch (kind) {
   case SPH_KERNEL_LUCY:
-    return dim == 1 ? 5.0 / (4.0 * h) : dim == 2 ? 5.0 / (pi * h * h) : 105.0 / (16.0 * pi * h * h * h);
+    return dim == 1   ? 5.0 / (4.0 * h)
+           : dim == 2 ? 5.0 / (pi * h * h)
+                      : 105.0 / (16.0 * pi * h * h * h);
   case SPH_KERNEL_CUBIC: {
     const double s = 0.5 * h;
-    return dim == 1 ? 2.0 / (3.0 * s) : dim == 2 ? 10.0 / (7.0 * pi * s * s) : 1.0 / (pi * s * s * s);
+    return dim == 1   ? 2.0 / (3.0 * s)
+           : dim == 2 ? 10.0 / (7.0 * pi * s * s)
+                      : 1.0 / (pi * s * s * s);
   }
   case SPH_KERNEL_WENDLAND:
-    return dim == 1 ? 5.0 / (4.0 * h) : dim == 2 ? 7.0 / (pi * h * h) : 21.0 / (2.0 * pi * h * h * h);
+    return dim == 1   ? 5.0 / (4.0 * h)
+           : dim == 2 ? 7.0 / (pi * h * h)
+                      : 21.0 / (2.0 * pi * h * h * h);
   }
   return 0.0;
 }

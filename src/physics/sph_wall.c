@@ -42,10 +42,10 @@
 
 struct sph_wall_work {
   PetscInt n_alloc;
-  double zeta_min;       /* smallest liquid distance from the surface used (quadratic) [m] */
-  double *sum_w;         /* sum_f W_wf */
-  double (*sum_v)[2];    /* sum_f v_f W_wf */
-  double *sum_p;         /* sum_f p_f W_wf */
+  double zeta_min;        /* smallest liquid distance from the surface used (quadratic) [m] */
+  double *sum_w;          /* sum_f W_wf */
+  double (*sum_v)[2];     /* sum_f v_f W_wf */
+  double *sum_p;          /* sum_f p_f W_wf */
   double (*sum_rho_r)[2]; /* sum_f rho_f r_wf W_wf */
   /* quadratic extrapolation only */
   double *sum_w_eta_zeta;      /* sum_f W_wf eta/zeta_f */
@@ -62,7 +62,8 @@ PetscErrorCode sph_wall_create(sph_wall_work **w) {
 
 PetscErrorCode sph_wall_destroy(sph_wall_work **w) {
   PetscFunctionBeginUser;
-  if (!*w) PetscFunctionReturn(0);
+  if (!*w)
+    PetscFunctionReturn(0);
   PetscCall(PetscFree4((*w)->sum_w, (*w)->sum_v, (*w)->sum_p, (*w)->sum_rho_r));
   PetscCall(
       PetscFree4((*w)->sum_w_eta_zeta, (*w)->sum_v_eta_zeta, (*w)->sum_w_zeta, (*w)->sum_tau));
@@ -77,14 +78,16 @@ SPH_INLINE void wall_sums(sph_kernel_kind kernel, int quadratic, sim *s, sph_wal
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     PetscInt wl = pi[k], f = pj[k];
     const int wi = ps->type[wl] == PTYPE_WALL, wj = ps->type[f] == PTYPE_WALL;
-    if (wi == wj) continue; /* wall-wall pairs are not listed; liquid-liquid ones don't matter here */
+    if (wi == wj)
+      continue; /* wall-wall pairs are not listed; liquid-liquid ones don't matter here */
     if (wj) {
       wl = pj[k];
       f = pi[k];
     }
     const double r_wf[2] = {ps->x[wl][0] - ps->x[f][0], ps->x[wl][1] - ps->x[f][1]};
     const double r2 = r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1];
-    if (r2 * inv_h * inv_h >= 1.0) continue; /* in the list's skin only */
+    if (r2 * inv_h * inv_h >= 1.0)
+      continue; /* in the list's skin only */
     double w, dwdr;
     sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r2), &w, &dwdr);
     W->sum_w[wl] += w;
@@ -201,7 +204,8 @@ PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *W) {
   sums[quadratic][s->sph.kernel](s, W);
   const double g[2] = {s->body_accel[0], s->body_accel[1]};
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_WALL) continue;
+    if (ps->type[i] != PTYPE_WALL)
+      continue;
     if (W->sum_w[i] <= 0.0) {
       ps->rho[i] = s->sph.rho0;
       ps->p[i] = sph_eos_pressure_bg(&s->sph, s->sph.rho0);

@@ -19,8 +19,8 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   PetscCall(PetscOptionsInt("-box_nx", "Particles along x [1]", NULL, b->nx, &b->nx, NULL));
   PetscCall(PetscOptionsInt("-box_ny", "Particles along y [1]", NULL, b->ny, &b->ny, NULL));
   PetscCall(PetscOptionsReal("-box_dx", "Lattice spacing [m]", NULL, b->dx, &b->dx, NULL));
-  PetscCall(PetscOptionsReal("-box_velocity", "Taylor-Green vortex amplitude U [m/s]", NULL, b->velocity,
-                             &b->velocity, NULL));
+  PetscCall(PetscOptionsReal("-box_velocity", "Taylor-Green vortex amplitude U [m/s]", NULL,
+                             b->velocity, &b->velocity, NULL));
   PetscOptionsEnd();
   PetscCheck(b->nx > 0 && b->ny > 0 && b->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-box_nx, -box_ny and -box_dx must be > 0");
@@ -51,7 +51,8 @@ static PetscErrorCode box_build(scene *self, sim *s) {
     for (PetscInt i = 0; i < b->nx; i++) {
       const double x[DMHS_DIM] = {(i + 0.5) * b->dx, (j + 0.5) * b->dx};
       const double kx = 2 * M_PI * x[0] / Lx, ky = 2 * M_PI * x[1] / Ly;
-      const double v[DMHS_DIM] = {b->velocity * sin(kx) * cos(ky), -b->velocity * cos(kx) * sin(ky)};
+      const double v[DMHS_DIM] = {b->velocity * sin(kx) * cos(ky),
+                                  -b->velocity * cos(kx) * sin(ky)};
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, v, m, s->sph.rho0, NULL));
     }
   PetscFunctionReturn(0);

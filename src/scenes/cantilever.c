@@ -30,23 +30,25 @@ typedef struct {
 } cantilever_data;
 
 /* scene defaults: the vein leaflet (SPEC 4.3) */
-#define CANTILEVER_K 1e6
-#define CANTILEVER_R0 1e-4
-#define CANTILEVER_KA 0.01
+#define CANTILEVER_K    1e6
+#define CANTILEVER_R0   1e-4
+#define CANTILEVER_KA   0.01
 #define CANTILEVER_MASS 2e-5
 
 static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   cantilever_data *c = self->data;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, "Scene cantilever (two-layer mass-spring beam, clamped, tip load)", NULL);
-  PetscCall(PetscOptionsInt("-cantilever_n", "Columns of particles, clamped ones included [1]", NULL, c->st.n, &c->st.n,
-                            NULL));
-  PetscCall(PetscOptionsInt("-cantilever_clamp", "Clamped columns at the left end [1]", NULL, c->st.n_clamp,
-                            &c->st.n_clamp, NULL));
-  PetscCall(PetscOptionsReal("-cantilever_mass", "Mass of one particle [kg] (per unit depth)", NULL, c->st.mass,
-                             &c->st.mass, NULL));
+  PetscOptionsBegin(s->comm, NULL,
+                    "Scene cantilever (two-layer mass-spring beam, clamped, tip load)", NULL);
+  PetscCall(PetscOptionsInt("-cantilever_n", "Columns of particles, clamped ones included [1]",
+                            NULL, c->st.n, &c->st.n, NULL));
+  PetscCall(PetscOptionsInt("-cantilever_clamp", "Clamped columns at the left end [1]", NULL,
+                            c->st.n_clamp, &c->st.n_clamp, NULL));
+  PetscCall(PetscOptionsReal("-cantilever_mass", "Mass of one particle [kg] (per unit depth)", NULL,
+                             c->st.mass, &c->st.mass, NULL));
   PetscOptionsEnd();
-  PetscCheck(c->st.n_clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-cantilever_clamp must be >= 1");
+  PetscCheck(c->st.n_clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-cantilever_clamp must be >= 1");
   PetscCheck(c->st.n >= c->st.n_clamp + 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-cantilever_n must be >= -cantilever_clamp + 2 (got %" PetscInt_FMT ")", c->st.n);
   PetscCheck(c->st.mass > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-cantilever_mass must be > 0");
@@ -60,8 +62,10 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   const double L = (c->st.n - c->st.n_clamp) * CANTILEVER_R0;
   solid_strip_beam(2 * CANTILEVER_K, CANTILEVER_KA, CANTILEVER_R0, c->st.mass, &EI, &kGA, &mu);
   const double compliance = L * L * L / (3 * EI) + L / kGA;
-  const double wb = 1.8751 * 1.8751 * sqrt(EI / (mu * L * L * L * L)), ws = 0.5 * M_PI * sqrt(kGA / (mu * L * L));
-  PetscCall(solid_load_set_default(c->load, 0.0, -0.01 * L / compliance, 1.0 / sqrt(1 / (wb * wb) + 1 / (ws * ws))));
+  const double wb = 1.8751 * 1.8751 * sqrt(EI / (mu * L * L * L * L)),
+               ws = 0.5 * M_PI * sqrt(kGA / (mu * L * L));
+  PetscCall(solid_load_set_default(c->load, 0.0, -0.01 * L / compliance,
+                                   1.0 / sqrt(1 / (wb * wb) + 1 / (ws * ws))));
   PetscFunctionReturn(0);
 }
 
@@ -72,7 +76,8 @@ static PetscErrorCode cantilever_open_csv(cantilever_data *c, sim *s) {
   const bond_params *bp;
   double F[2], ka, th0, gamma;
   PetscFunctionBeginUser;
-  if (s->rank) PetscFunctionReturn(0);
+  if (s->rank)
+    PetscFunctionReturn(0);
   PetscCall(bond_get_params(s, &style, &bp));
   const double k_s =
       style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
@@ -100,7 +105,8 @@ static PetscErrorCode cantilever_build(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCall(bond_get_params(s, &style, &bp));
   const double r0 = bp->r0[0];
-  const double k_s = style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
+  const double k_s =
+      style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
   double ka, th0;
   PetscCall(angle_get_params(s, &ka, &th0));
   c->st.spacing = r0;
@@ -145,7 +151,8 @@ static PetscErrorCode cantilever_energies(sim *s, double *kin, double *pot) {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
     if (s->ps.type[i] != PTYPE_WALL)
-      local += 0.5 * s->ps.mass[i] * (s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
+      local +=
+          0.5 * s->ps.mass[i] * (s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
   PetscCallMPI(MPI_Allreduce(&local, kin, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   *pot = 0;
   for (int m = 0; m < s->n_modules; m++)
@@ -178,10 +185,11 @@ static PetscErrorCode cantilever_finish(scene *self, sim *s) {
   double d[2];
   PetscFunctionBeginUser;
   PetscCall(cantilever_tip(s, d));
-  PetscCall(PetscPrintf(s->comm,
-                        "cantilever: L = %g m, EI = %g N m^2, kGA = %g N; final tip displacement (%g, %g) m; see "
-                        "cantilever.csv and test/validation/cantilever.py\n",
-                        c->L, c->EI, c->kGA, d[0], d[1]));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "cantilever: L = %g m, EI = %g N m^2, kGA = %g N; final tip displacement (%g, %g) m; see "
+      "cantilever.csv and test/validation/cantilever.py\n",
+      c->L, c->EI, c->kGA, d[0], d[1]));
   PetscCall(csv_close(&c->csv, "cantilever.csv"));
   PetscFunctionReturn(0);
 }
@@ -189,7 +197,8 @@ static PetscErrorCode cantilever_finish(scene *self, sim *s) {
 static PetscErrorCode cantilever_destroy(scene *self) {
   cantilever_data *c = self->data;
   PetscFunctionBeginUser;
-  if (c->csv) fclose(c->csv);
+  if (c->csv)
+    fclose(c->csv);
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }

@@ -17,11 +17,11 @@ typedef struct {
   channel_flow flow;
   double width, length; /* l (wall to wall) and the x period [m] */
   PetscInt nx, ny;
-  PetscInt wall_layers;  /* 0 = enough to fill the kernel support */
-  double wall_speed;     /* upper plate (Couette) [m/s] */
-  double drive;          /* F or g0 (Poiseuille) [m/s^2], read back from the body force module */
-  double omega;          /* 2 pi/T of a pulsatile drive [1/s], 0 = constant */
-  double nu;             /* for the exact solution */
+  PetscInt wall_layers; /* 0 = enough to fill the kernel support */
+  double wall_speed;    /* upper plate (Couette) [m/s] */
+  double drive;         /* F or g0 (Poiseuille) [m/s^2], read back from the body force module */
+  double omega;         /* 2 pi/T of a pulsatile drive [1/s], 0 = constant */
+  double nu;            /* for the exact solution */
   module *body;
   errors err;
 } channel_data;
@@ -44,26 +44,35 @@ static double exact_couette(double y, double t, const void *ctx) {
 static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
   channel_data *c = self->data;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(s->comm, NULL, c->flow == CHANNEL_POISEUILLE ? "Scene poiseuille" : "Scene couette", NULL);
-  PetscCall(PetscOptionsReal("-channel_width", "Distance l between the walls [m]", NULL, c->width, &c->width, NULL));
-  PetscCall(PetscOptionsReal("-channel_length", "Periodic length along x [m]", NULL, c->length, &c->length, NULL));
-  PetscCall(PetscOptionsInt("-channel_nx", "Liquid particles along x [1]", NULL, c->nx, &c->nx, NULL));
-  PetscCall(PetscOptionsInt("-channel_ny", "Liquid particles across the channel [1]", NULL, c->ny, &c->ny, NULL));
-  PetscCall(PetscOptionsInt("-channel_wall_layers", "Wall particle layers per wall [1] (0 = fill the support)",
-                            NULL, c->wall_layers, &c->wall_layers, NULL));
+  PetscOptionsBegin(s->comm, NULL,
+                    c->flow == CHANNEL_POISEUILLE ? "Scene poiseuille" : "Scene couette", NULL);
+  PetscCall(PetscOptionsReal("-channel_width", "Distance l between the walls [m]", NULL, c->width,
+                             &c->width, NULL));
+  PetscCall(PetscOptionsReal("-channel_length", "Periodic length along x [m]", NULL, c->length,
+                             &c->length, NULL));
+  PetscCall(
+      PetscOptionsInt("-channel_nx", "Liquid particles along x [1]", NULL, c->nx, &c->nx, NULL));
+  PetscCall(PetscOptionsInt("-channel_ny", "Liquid particles across the channel [1]", NULL, c->ny,
+                            &c->ny, NULL));
+  PetscCall(PetscOptionsInt("-channel_wall_layers",
+                            "Wall particle layers per wall [1] (0 = fill the support)", NULL,
+                            c->wall_layers, &c->wall_layers, NULL));
   if (c->flow == CHANNEL_COUETTE)
-    PetscCall(PetscOptionsReal("-wall_speed", "Upper plate speed along x [m/s]", NULL, c->wall_speed,
-                               &c->wall_speed, NULL));
+    PetscCall(PetscOptionsReal("-wall_speed", "Upper plate speed along x [m/s]", NULL,
+                               c->wall_speed, &c->wall_speed, NULL));
   PetscOptionsEnd();
   PetscCheck(c->width > 0 && c->length > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-channel_width and -channel_length must be > 0 (got %g, %g)", c->width, c->length);
   PetscCheck(c->nx > 0 && c->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-channel_nx and -channel_ny must be > 0 (got %" PetscInt_FMT ", %" PetscInt_FMT ")", c->nx, c->ny);
-  PetscCheck(c->wall_layers >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-channel_wall_layers must be >= 0");
+             "-channel_nx and -channel_ny must be > 0 (got %" PetscInt_FMT ", %" PetscInt_FMT ")",
+             c->nx, c->ny);
+  PetscCheck(c->wall_layers >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_wall_layers must be >= 0");
   s->dx = c->width / (double)c->ny;
   const double dx_along = c->length / (double)c->nx;
   PetscCheck(fabs(dx_along - s->dx) <= 1e-9 * s->dx, s->comm, PETSC_ERR_ARG_INCOMP,
-             "the lattice must be square: -channel_length/-channel_nx = %g m but -channel_width/-channel_ny = %g m",
+             "the lattice must be square: -channel_length/-channel_nx = %g m but "
+             "-channel_width/-channel_ny = %g m",
              dx_along, s->dx);
 
   /* the published channel setup; every value can be overridden with -sph_* */
@@ -97,7 +106,8 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
   const double zero[DMHS_DIM] = {0, 0}, plate[DMHS_DIM] = {c->wall_speed, 0};
   PetscInt64 gid = 0;
   PetscFunctionBeginUser;
-  const PetscInt layers = c->wall_layers > 0 ? c->wall_layers : (PetscInt)ceil(s->sph.h / dx - 1e-9);
+  const PetscInt layers =
+      c->wall_layers > 0 ? c->wall_layers : (PetscInt)ceil(s->sph.h / dx - 1e-9);
   s->dom.lo[0] = 0;
   s->dom.hi[0] = c->length;
   s->dom.periodic[0] = PETSC_TRUE;

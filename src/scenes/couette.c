@@ -3,4 +3,6 @@
 #include "dmhs/channel.h"
 #include "dmhs/scenes.h"
 
-PetscErrorCode couette_scene_create(scene **out) { return channel_scene_create(CHANNEL_COUETTE, out); }
+PetscErrorCode couette_scene_create(scene **out) {
+  return channel_scene_create(CHANNEL_COUETTE, out);
+}

@@ -32,14 +32,14 @@
 #include "solid_strip.h"
 
 typedef struct {
-  PetscInt nx, ny;      /* liquid lattice (before the flap is cut out) */
-  PetscInt flap_x;      /* lattice column of the flap's upstream layer */
-  PetscInt flap_rows;   /* flap rows above the wall */
+  PetscInt nx, ny;    /* liquid lattice (before the flap is cut out) */
+  PetscInt flap_x;    /* lattice column of the flap's upstream layer */
+  PetscInt flap_rows; /* flap rows above the wall */
   double dx, solid_density_ratio;
   solid_strip st;
   module *body, *rep;
-  PetscInt n_fluid;     /* fluid gids are 0 .. n_fluid-1 */
-  signed char *side;    /* per fluid gid: -1/+1 beside the flap, 0 = not beside */
+  PetscInt n_fluid;  /* fluid gids are 0 .. n_fluid-1 */
+  signed char *side; /* per fluid gid: -1/+1 beside the flap, 0 = not beside */
   PetscInt crossings;
   /* mpi: the strip's particles (2c + l) replicated on every rank, refreshed per use */
   double (*sx)[2], (*sv)[2], (*sx0)[2];
@@ -50,16 +50,19 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   flap_data *f = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene flap (flexible flap in a periodic channel flow)", NULL);
-  PetscCall(PetscOptionsInt("-flap_nx", "Liquid lattice columns (periodic length = nx dx) [1]", NULL, f->nx, &f->nx, NULL));
-  PetscCall(PetscOptionsInt("-flap_ny", "Liquid lattice rows (channel width = ny dx) [1]", NULL, f->ny, &f->ny, NULL));
-  PetscCall(PetscOptionsReal("-flap_dx", "Particle spacing dx [m] (also the flap's bond rest length)", NULL, f->dx, &f->dx,
-                             NULL));
-  PetscCall(PetscOptionsInt("-flap_rows", "Flap height in rows above the wall [1]", NULL, f->flap_rows, &f->flap_rows,
-                            NULL));
-  PetscCall(PetscOptionsInt("-flap_column", "Lattice column of the flap's upstream layer [1]", NULL, f->flap_x,
-                            &f->flap_x, NULL));
-  PetscCall(PetscOptionsReal("-flap_density_ratio", "Flap particle mass / liquid particle mass [1]", NULL,
-                             f->solid_density_ratio, &f->solid_density_ratio, NULL));
+  PetscCall(PetscOptionsInt("-flap_nx", "Liquid lattice columns (periodic length = nx dx) [1]",
+                            NULL, f->nx, &f->nx, NULL));
+  PetscCall(PetscOptionsInt("-flap_ny", "Liquid lattice rows (channel width = ny dx) [1]", NULL,
+                            f->ny, &f->ny, NULL));
+  PetscCall(PetscOptionsReal("-flap_dx",
+                             "Particle spacing dx [m] (also the flap's bond rest length)", NULL,
+                             f->dx, &f->dx, NULL));
+  PetscCall(PetscOptionsInt("-flap_rows", "Flap height in rows above the wall [1]", NULL,
+                            f->flap_rows, &f->flap_rows, NULL));
+  PetscCall(PetscOptionsInt("-flap_column", "Lattice column of the flap's upstream layer [1]", NULL,
+                            f->flap_x, &f->flap_x, NULL));
+  PetscCall(PetscOptionsReal("-flap_density_ratio", "Flap particle mass / liquid particle mass [1]",
+                             NULL, f->solid_density_ratio, &f->solid_density_ratio, NULL));
   PetscOptionsEnd();
   PetscCheck(f->nx > 4 && f->ny > 4 && f->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flap_nx, -flap_ny must be > 4 and -flap_dx > 0");
@@ -67,7 +70,8 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
              "-flap_rows must lie in [2, -flap_ny - 3] (got %" PetscInt_FMT ")", f->flap_rows);
   PetscCheck(f->flap_x >= 0 && f->flap_x + 1 < f->nx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flap_column must lie in [0, -flap_nx - 2]");
-  PetscCheck(f->solid_density_ratio > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flap_density_ratio must be > 0");
+  PetscCheck(f->solid_density_ratio > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_density_ratio must be > 0");
   s->dx = f->dx;
   /* A viscous liquid so that the flow settles in a short run (override with -sph_*).
    * c0: the flap carries most of the drive, F ~ rho g (channel area), as a
@@ -109,7 +113,8 @@ static PetscErrorCode flap_build(scene *self, sim *s) {
   /* liquid first (gids 0 .. n_fluid-1), minus the flap's sites */
   for (PetscInt j = 0; j < f->ny; j++)
     for (PetscInt i = 0; i < f->nx; i++) {
-      if ((i == f->flap_x || i == f->flap_x + 1) && j < f->flap_rows) continue;
+      if ((i == f->flap_x || i == f->flap_x + 1) && j < f->flap_rows)
+        continue;
       const double x[2] = {(i + 0.5) * dx, (j + 0.5) * dx};
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, s->sph.rho0, NULL));
     }
@@ -117,17 +122,21 @@ static PetscErrorCode flap_build(scene *self, sim *s) {
   /* walls; the flap's clamped row replaces the top lower-wall layer at its columns */
   for (PetscInt k = 0; k < layers; k++)
     for (PetscInt i = 0; i < f->nx; i++) {
-      const double below[2] = {(i + 0.5) * dx, -(k + 0.5) * dx}, above[2] = {(i + 0.5) * dx, (f->ny + k + 0.5) * dx};
+      const double below[2] = {(i + 0.5) * dx, -(k + 0.5) * dx},
+                   above[2] = {(i + 0.5) * dx, (f->ny + k + 0.5) * dx};
       if (!(k == 0 && (i == f->flap_x || i == f->flap_x + 1)))
-        PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
+        PetscCall(
+            particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, zero, m, s->sph.rho0, NULL));
     }
   /* the flap: columns of the strip run up the channel, layer 0 upstream */
   bond_style style;
   const bond_params *bp;
   PetscCall(bond_get_params(s, &style, &bp));
-  PetscCheck(fabs(bp->r0[0] - dx) <= 1e-9 * dx, s->comm, PETSC_ERR_ARG_INCOMP,
-             "flap: -bond_r0 (%g m) must equal -flap_dx (%g m): the flap sits on the liquid's lattice", bp->r0[0], dx);
+  PetscCheck(
+      fabs(bp->r0[0] - dx) <= 1e-9 * dx, s->comm, PETSC_ERR_ARG_INCOMP,
+      "flap: -bond_r0 (%g m) must equal -flap_dx (%g m): the flap sits on the liquid's lattice",
+      bp->r0[0], dx);
   f->st.n = f->flap_rows + 1;
   f->st.n_clamp = 1;
   f->st.origin[0] = (f->flap_x + 0.5) * dx;
@@ -155,14 +164,16 @@ static PetscErrorCode flap_gather_strip(flap_data *f, sim *s) {
   PetscCall(PetscCalloc1(6 * n, &buf));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     const PetscInt64 k = ps->gid[i] - f->st.first_gid;
-    if (k < 0 || k >= n) continue;
+    if (k < 0 || k >= n)
+      continue;
     for (int d = 0; d < 2; d++) {
       buf[6 * k + d] = ps->x[i][d];
       buf[6 * k + 2 + d] = ps->v[i][d];
       buf[6 * k + 4 + d] = ps->x0[i][d];
     }
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, (PetscMPIInt)(6 * n), MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(
+      MPI_Allreduce(MPI_IN_PLACE, buf, (PetscMPIInt)(6 * n), MPI_DOUBLE, MPI_SUM, s->comm));
   for (PetscInt k = 0; k < n; k++)
     for (int d = 0; d < 2; d++) {
       f->sx[k][d] = buf[6 * k + d];
@@ -179,7 +190,8 @@ static double flap_midline_x(const flap_data *f, double y) {
   for (PetscInt c = 0; c + 1 < f->st.n; c++) {
     const PetscInt a0 = 2 * c, a1 = 2 * c + 1, b0 = 2 * c + 2, b1 = 2 * c + 3;
     const double ya = 0.5 * (x[a0][1] + x[a1][1]), yb = 0.5 * (x[b0][1] + x[b1][1]);
-    if (y < ya || y >= yb) continue;
+    if (y < ya || y >= yb)
+      continue;
     const double xa = 0.5 * (x[a0][0] + x[a1][0]), xb = 0.5 * (x[b0][0] + x[b1][0]);
     return xa + (xb - xa) * (y - ya) / (yb - ya);
   }
@@ -194,19 +206,23 @@ static PetscErrorCode flap_count_crossings(flap_data *f, sim *s) {
    * list; every rank then counts the same crossings */
   PetscCall(PetscCalloc1(f->n_fluid, &now_all));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->gid[i] >= f->n_fluid) continue;
+    if (ps->type[i] != PTYPE_FLUID || ps->gid[i] >= f->n_fluid)
+      continue;
     const double xm = flap_midline_x(f, ps->x[i][1]);
     signed char now = 0;
     if (!isnan(xm)) {
       double d[2] = {ps->x[i][0] - xm, 0};
       domain_min_image(&s->dom, d);
-      if (fabs(d[0]) < 3 * f->dx) now = d[0] < 0 ? -1 : 1;
+      if (fabs(d[0]) < 3 * f->dx)
+        now = d[0] < 0 ? -1 : 1;
     }
     now_all[ps->gid[i]] = now;
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, now_all, (PetscMPIInt)f->n_fluid, MPI_SIGNED_CHAR, MPI_SUM, s->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, now_all, (PetscMPIInt)f->n_fluid, MPI_SIGNED_CHAR,
+                             MPI_SUM, s->comm));
   for (PetscInt g = 0; g < f->n_fluid; g++) {
-    if (f->side[g] && now_all[g] && f->side[g] != now_all[g]) f->crossings++;
+    if (f->side[g] && now_all[g] && f->side[g] != now_all[g])
+      f->crossings++;
     f->side[g] = now_all[g];
   }
   PetscCall(PetscFree(now_all));
@@ -236,7 +252,8 @@ static PetscErrorCode flap_slip(flap_data *f, sim *s, double *slip, double *near
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(N_ACC * n_faces + 1, &acc));
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    if (ps->type[i] == PTYPE_FLUID) u2 = PetscMax(u2, ps->v[i][0] * ps->v[i][0] + ps->v[i][1] * ps->v[i][1]);
+    if (ps->type[i] == PTYPE_FLUID)
+      u2 = PetscMax(u2, ps->v[i][0] * ps->v[i][0] + ps->v[i][1] * ps->v[i][1]);
   /* the flap's particles come from the replicated strip (sx, sv: flap_gather_strip), the
    * liquid from each rank's owned particles; the sums of every face are reduced over ranks */
   for (PetscInt c = c0; c + 1 < f->st.n; c++) {
@@ -254,11 +271,14 @@ static PetscErrorCode flap_slip(flap_data *f, sim *s, double *slip, double *near
       const double sigma = l == 0 ? -1.0 : 1.0;
       double *A = acc + N_ACC * (2 * (c - c0) + l);
       for (PetscInt i = 0; i < ps->n_owned; i++) {
-        if (ps->type[i] != PTYPE_FLUID) continue;
+        if (ps->type[i] != PTYPE_FLUID)
+          continue;
         double r[2] = {ps->x[i][0] - f->sx[P][0], ps->x[i][1] - f->sx[P][1]};
         domain_min_image(&s->dom, r);
-        const double d = sigma * (r[0] * n[0] + r[1] * n[1]) - 0.5 * dx, along = r[0] * t[0] + r[1] * t[1];
-        if (fabs(along) >= dx || d <= -0.5 * dx || d > 2.5 * dx) continue;
+        const double d = sigma * (r[0] * n[0] + r[1] * n[1]) - 0.5 * dx,
+                     along = r[0] * t[0] + r[1] * t[1];
+        if (fabs(along) >= dx || d <= -0.5 * dx || d > 2.5 * dx)
+          continue;
         const double u[2] = {ps->v[i][0] - f->sv[P][0], ps->v[i][1] - f->sv[P][1]};
         A[S] += 1;
         A[SD] += d;
@@ -274,7 +294,8 @@ static PetscErrorCode flap_slip(flap_data *f, sim *s, double *slip, double *near
       }
     }
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, acc, (PetscMPIInt)(N_ACC * n_faces), MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, acc, (PetscMPIInt)(N_ACC * n_faces), MPI_DOUBLE, MPI_SUM,
+                             s->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &u2, 1, MPI_DOUBLE, MPI_MAX, s->comm));
   *umax = sqrt(u2);
   double sum_near = 0, n_near = 0;
@@ -282,9 +303,12 @@ static PetscErrorCode flap_slip(flap_data *f, sim *s, double *slip, double *near
     const double *A = acc + N_ACC * k;
     sum_near += A[NEAR];
     n_near += A[NNEAR];
-    const double det = A[S] * A[SDD] - A[SD] * A[SD]; /* S^2 var(d): needs points spread across the layers */
-    if (A[S] < 3 || det < A[S] * A[S] * 0.09 * dx * dx) continue;
-    const double u0[2] = {(A[SDD] * A[SU0] - A[SD] * A[SUD0]) / det, (A[SDD] * A[SU1] - A[SD] * A[SUD1]) / det};
+    const double det =
+        A[S] * A[SDD] - A[SD] * A[SD]; /* S^2 var(d): needs points spread across the layers */
+    if (A[S] < 3 || det < A[S] * A[S] * 0.09 * dx * dx)
+      continue;
+    const double u0[2] = {(A[SDD] * A[SU0] - A[SD] * A[SUD0]) / det,
+                          (A[SDD] * A[SU1] - A[SD] * A[SUD1]) / det};
     sum_slip += hypot(u0[0], u0[1]);
     n_slip += 1;
   }
@@ -326,8 +350,10 @@ static PetscErrorCode flap_diagnose(scene *self, sim *s) {
   if (s->rank == 0) { /* mpi: rank 0 writes */
     /* slip is undefined while the liquid is at rest (u_max = 0): an empty cell, never NaN */
     char slip_s[32] = "", near_s[32] = "";
-    if (isfinite(slip)) snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
-    if (isfinite(near)) snprintf(near_s, sizeof(near_s), "%.6g", near);
+    if (isfinite(slip))
+      snprintf(slip_s, sizeof(slip_s), "%.6g", slip);
+    if (isfinite(near))
+      snprintf(near_s, sizeof(near_s), "%.6g", near);
     PetscCall(csv_row(f->csv, "flap.csv", "%.8g,%.8g,%.8g,%" PetscInt_FMT ",%s,%s,%.6g\n", s->t,
                       tip[0], tip[1], f->crossings, slip_s, near_s, umax));
   }
@@ -383,10 +409,12 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
   PetscCall(flap_gather_strip(f, s));
   PetscCall(flap_tip(f, tip));
   PetscCall(flap_slip(f, s, &slip, &near, &umax));
-  PetscCall(PetscPrintf(s->comm,
-                        "flap: tip displacement (%g, %g) m (%.3g of the height), fluid crossings %" PetscInt_FMT
-                        ", slip on the faces |u(d=0) - v_flap|/u_max = %.3g (first fluid layer %.3g), u_max = %g m/s\n",
-                        tip[0], tip[1], tip[0] / (f->flap_rows * f->dx), f->crossings, slip, near, umax));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "flap: tip displacement (%g, %g) m (%.3g of the height), fluid crossings %" PetscInt_FMT
+      ", slip on the faces |u(d=0) - v_flap|/u_max = %.3g (first fluid layer %.3g), u_max = %g "
+      "m/s\n",
+      tip[0], tip[1], tip[0] / (f->flap_rows * f->dx), f->crossings, slip, near, umax));
   PetscCall(csv_close(&f->csv, "flap.csv"));
   /* mpi: rows of every rank gathered to rank 0 and sorted by gid (independent of the rank count) */
   const size_t n_mine = FLAP_ROW * (size_t)ps->n_owned;
@@ -408,7 +436,8 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
     qsort(all, n_all / FLAP_ROW, FLAP_ROW * sizeof(double), flap_compare_gid);
     PetscCall(sim_output_path(s, "flap-particles.csv", path, sizeof(path)));
     FILE *out = fopen(path, "w");
-    PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
+               strerror(errno));
     int ok = fprintf(out, "x,y,vx,vy,type\n") > 0;
     for (size_t k = 0; k < n_all && ok; k += FLAP_ROW)
       ok = fprintf(out, "%.6g,%.6g,%.6g,%.6g,%d\n", all[k + 1], all[k + 2], all[k + 3], all[k + 4],
@@ -423,7 +452,8 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
 static PetscErrorCode flap_destroy(scene *self) {
   flap_data *f = self->data;
   PetscFunctionBeginUser;
-  if (f->csv) fclose(f->csv);
+  if (f->csv)
+    fclose(f->csv);
   PetscCall(PetscFree(f->side));
   PetscCall(PetscFree3(f->sx, f->sv, f->sx0));
   PetscCall(PetscFree(self->data));

@@ -50,15 +50,15 @@
 #include "dmhs/membrane_leak.h"
 
 #define TAG_WHITE 1
-#define TAG_RED 2
+#define TAG_RED   2
 
 typedef struct {
-  PetscInt n_pockets;   /* N + 1 */
+  PetscInt n_pockets; /* N + 1 */
   double b, dx, level, amplitude, wall_height, weir;
   PetscInt layers, clamp, red_pocket;
   PetscBool red;
   module *body, *rep, *peri;
-  PetscInt64 n_fluid;   /* fluid gids 0 .. n_fluid - 1 */
+  PetscInt64 n_fluid; /* fluid gids 0 .. n_fluid - 1 */
   PetscInt64 n_white0, n_red0;
   double x_end, x_park; /* (N+1) b; parking line past the weir */
   double lot_x0, lot_y0, lot_sp;
@@ -66,10 +66,10 @@ typedef struct {
   /* history of x_F for the slope (replicated) */
   double *hist_t, *hist_x;
   PetscInt n_hist, cap_hist;
-  double alpha_T;       /* alpha after one period (NAN until reached) */
-  double lift_max;      /* largest segment lift seen [m] */
-  membrane_layout mem;  /* the liquid must stay above its top layer */
-  double rho_dev_max, mach_max; /* over the output rows so far */
+  double alpha_T;                     /* alpha after one period (NAN until reached) */
+  double lift_max;                    /* largest segment lift seen [m] */
+  membrane_layout mem;                /* the liquid must stay above its top layer */
+  double rho_dev_max, mach_max;       /* over the output rows so far */
   PetscInt64 inside_max, through_max; /* most liquid particles in / through the membrane in a row */
   FILE *csv;
 } intestine_data;
@@ -79,29 +79,41 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene intestine (colon with peristalsis)", NULL);
-  PetscCall(PetscOptionsInt("-intestine_pockets", "Number of pockets N + 1 [1]", NULL, c->n_pockets, &c->n_pockets, NULL));
+  PetscCall(PetscOptionsInt("-intestine_pockets", "Number of pockets N + 1 [1]", NULL, c->n_pockets,
+                            &c->n_pockets, NULL));
   PetscCall(PetscOptionsReal("-intestine_b", "Pocket length b [m]", NULL, c->b, &c->b, NULL));
-  PetscCall(PetscOptionsReal("-intestine_dx", "Particle spacing dx [m] (also the membrane's r0)", NULL, c->dx, &c->dx, NULL));
-  PetscCall(PetscOptionsReal("-intestine_level", "Liquid level L above the folds [m]", NULL, c->level, &c->level, NULL));
-  PetscCall(PetscOptionsReal("-intestine_amplitude", "Haustral depth A of the profile -A sin^2(pi x/b) [m]", NULL,
+  PetscCall(PetscOptionsReal("-intestine_dx", "Particle spacing dx [m] (also the membrane's r0)",
+                             NULL, c->dx, &c->dx, NULL));
+  PetscCall(PetscOptionsReal("-intestine_level", "Liquid level L above the folds [m]", NULL,
+                             c->level, &c->level, NULL));
+  PetscCall(PetscOptionsReal("-intestine_amplitude",
+                             "Haustral depth A of the profile -A sin^2(pi x/b) [m]", NULL,
                              c->amplitude, &c->amplitude, NULL));
-  PetscCall(PetscOptionsInt("-intestine_membrane_layers", "Membrane particle layers [1]", NULL, c->layers, &c->layers, NULL));
-  PetscCall(PetscOptionsInt("-intestine_clamp", "Fixed membrane columns at each end [1]", NULL, c->clamp, &c->clamp, NULL));
-  PetscCall(PetscOptionsReal("-intestine_wall_height", "Left wall's height above the level [m]", NULL, c->wall_height,
-                             &c->wall_height, NULL));
+  PetscCall(PetscOptionsInt("-intestine_membrane_layers", "Membrane particle layers [1]", NULL,
+                            c->layers, &c->layers, NULL));
+  PetscCall(PetscOptionsInt("-intestine_clamp", "Fixed membrane columns at each end [1]", NULL,
+                            c->clamp, &c->clamp, NULL));
+  PetscCall(PetscOptionsReal("-intestine_wall_height", "Left wall's height above the level [m]",
+                             NULL, c->wall_height, &c->wall_height, NULL));
   c->weir = c->level;
-  PetscCall(PetscOptionsReal("-intestine_weir", "Top of the overflow weir above the folds [m] (default: the level)",
+  PetscCall(PetscOptionsReal("-intestine_weir",
+                             "Top of the overflow weir above the folds [m] (default: the level)",
                              NULL, c->weir, &c->weir, NULL));
-  PetscCall(PetscOptionsBool("-intestine_red", "Track the liquid of a second pocket (red)", NULL, c->red, &c->red, NULL));
-  PetscCall(PetscOptionsInt("-intestine_red_pocket", "Pocket of the red set [1]", NULL, c->red_pocket, &c->red_pocket, NULL));
+  PetscCall(PetscOptionsBool("-intestine_red", "Track the liquid of a second pocket (red)", NULL,
+                             c->red, &c->red, NULL));
+  PetscCall(PetscOptionsInt("-intestine_red_pocket", "Pocket of the red set [1]", NULL,
+                            c->red_pocket, &c->red_pocket, NULL));
   PetscOptionsEnd();
-  PetscCheck(c->n_pockets >= 1 && c->b > 0 && c->dx > 0 && c->dx < 0.1 * c->b, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(c->n_pockets >= 1 && c->b > 0 && c->dx > 0 && c->dx < 0.1 * c->b, s->comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_pockets must be >= 1, -intestine_b > 0 and 0 < -intestine_dx < b/10");
   PetscCheck(c->level > c->dx && c->amplitude >= 0 && c->wall_height >= 0 && c->weir >= 0, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE, "-intestine_level must exceed dx; amplitude, wall height and weir must be >= 0");
+             PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_level must exceed dx; amplitude, wall height and weir must be >= 0");
   PetscCheck(c->layers >= 2 && c->clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_membrane_layers must be >= 2 and -intestine_clamp >= 1");
-  PetscCheck(!c->red || (c->red_pocket > 0 && c->red_pocket < c->n_pockets), s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(!c->red || (c->red_pocket > 0 && c->red_pocket < c->n_pockets), s->comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_red_pocket must lie in [1, N] (got %" PetscInt_FMT ")", c->red_pocket);
   s->dx = c->dx;
   /* the published case; h = 2.5 dx, not the published h = dx (no neighbour inside the support) */
@@ -125,14 +137,17 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
    * [s/m], 8.8e-6 s at dx = 2.5e-4 m) lies below the published 1e-5 s, and
    * the bonds' limit tightens as the membrane stretches under the wave */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
-  if (!set) s->dt = 0.0;
+  if (!set)
+    s->dt = 0.0;
   PetscCall(sim_enable_module(s, "sph", NULL));
   PetscCall(sim_enable_module(s, "body_force", &c->body));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-gravity", &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, "-gravity", "9.81"));
+  if (!set)
+    PetscCall(PetscOptionsSetValue(NULL, "-gravity", "9.81"));
   /* the published membrane is nonlinear (FENE-like) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-bond_style", &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
+  if (!set)
+    PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
   PetscCall(topology_enable(s));
   /* k_b = 1e-4 J, r0 = dx, r_max = 1.8 dx (4.5e-4 m at dx = 2.5e-4 m) */
   PetscCall(bond_set_default(s, 1e-4, c->dx, 1.8 * c->dx));
@@ -188,20 +203,27 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
   PetscCheck(c->lot_rows > 0, s->comm, PETSC_ERR_PLIB, "intestine: no room for the parking lot");
   /* liquid (gids 0 .. n_fluid - 1) */
   const PetscInt nx = (PetscInt)floor(c->x_end / dx + 1e-9);
-  const PetscInt j0 = (PetscInt)floor((-c->amplitude) / dx) - 1, j1 = (PetscInt)ceil(c->level / dx) + 1;
+  const PetscInt j0 = (PetscInt)floor((-c->amplitude) / dx) - 1,
+                 j1 = (PetscInt)ceil(c->level / dx) + 1;
   for (PetscInt i = 0; i < nx; i++)
     for (PetscInt j = j0; j <= j1; j++) {
       const double x[2] = {(i + 0.5) * dx, (j + 0.5) * dx};
       const double ys = intestine_profile(c, x[0]), sl = intestine_slope(c, x[0]);
-      if (x[1] >= c->level || x[1] < ys + 0.95 * dx * sqrt(1 + sl * sl)) continue;
-      /* hydrostatic start, rho from p = rho0 g (L - y) through the Tait EOS: no collapse under gravity */
-      const double B = s->sph.c0 * s->sph.c0 * s->sph.rho0 / 7.0, ph = s->sph.rho0 * g * (c->level - x[1]);
-      const double rho = s->sph.eos == SPH_EOS_TAIT ? s->sph.rho0 * pow(1.0 + ph / B, 1.0 / 7.0) : s->sph.rho0;
+      if (x[1] >= c->level || x[1] < ys + 0.95 * dx * sqrt(1 + sl * sl))
+        continue;
+      /* hydrostatic start, rho from p = rho0 g (L - y) through the Tait EOS: no collapse under
+       * gravity */
+      const double B = s->sph.c0 * s->sph.c0 * s->sph.rho0 / 7.0,
+                   ph = s->sph.rho0 * g * (c->level - x[1]);
+      const double rho =
+          s->sph.eos == SPH_EOS_TAIT ? s->sph.rho0 * pow(1.0 + ph / B, 1.0 / 7.0) : s->sph.rho0;
       PetscInt idx;
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, rho, &idx));
       const PetscInt k = tracking_pocket(x[0], c->n_pockets, c->b, 0.0);
-      if (k == 0) s->ps.tag[idx] = TAG_WHITE;
-      else if (c->red && k == c->red_pocket) s->ps.tag[idx] = TAG_RED;
+      if (k == 0)
+        s->ps.tag[idx] = TAG_WHITE;
+      else if (c->red && k == c->red_pocket)
+        s->ps.tag[idx] = TAG_RED;
     }
   c->n_fluid = gid;
   /* the parking lot must fit in x: widen the domain */
@@ -251,26 +273,33 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
       const double sh = off - l * dx; /* layer 0 on top */
       const double p[2] = {x + sh * n[0], ym + sh * n[1]};
       PetscInt idx;
-      PetscCall(particles_add_owned(&s->ps, gid++, fixed ? PTYPE_WALL : PTYPE_SOLID, p, zero, m, s->sph.rho0, &idx));
-      if (!fixed) s->ps.tag[idx] = PERISTALSIS_TAG0 + (PetscInt)PetscMin(k, c->n_pockets - 1);
+      PetscCall(particles_add_owned(&s->ps, gid++, fixed ? PTYPE_WALL : PTYPE_SOLID, p, zero, m,
+                                    s->sph.rho0, &idx));
+      if (!fixed)
+        s->ps.tag[idx] = PERISTALSIS_TAG0 + (PetscInt)PetscMin(k, c->n_pockets - 1);
     }
   }
   PetscCall(PetscFree(cx));
   c->mem = (membrane_layout){.g0 = g0, .n_columns = ncol, .layers = L};
-  PetscCall(PetscPrintf(s->comm,
-                        "intestine: %" PetscInt_FMT " pockets of %g m, fluid gids 0..%" PetscInt64_FMT ", walls %" PetscInt64_FMT
-                        "..%" PetscInt64_FMT ", membrane %" PetscInt64_FMT "..%" PetscInt64_FMT " (%" PetscInt_FMT " columns x %" PetscInt_FMT
-                        " layers, %" PetscInt_FMT " fixed at each end), parking lot of %" PetscInt_FMT " rows at x >= %g m\n",
-                        c->n_pockets, c->b, c->n_fluid - 1, c->n_fluid, g0 - 1, g0, gid - 1, ncol, L, c->clamp, c->lot_rows,
-                        c->lot_x0));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "intestine: %" PetscInt_FMT " pockets of %g m, fluid gids 0..%" PetscInt64_FMT
+      ", walls %" PetscInt64_FMT "..%" PetscInt64_FMT ", membrane %" PetscInt64_FMT
+      "..%" PetscInt64_FMT " (%" PetscInt_FMT " columns x %" PetscInt_FMT " layers, %" PetscInt_FMT
+      " fixed at each end), parking lot of %" PetscInt_FMT " rows at x >= %g m\n",
+      c->n_pockets, c->b, c->n_fluid - 1, c->n_fluid, g0 - 1, g0, gid - 1, ncol, L, c->clamp,
+      c->lot_rows, c->lot_x0));
   topology *t = s->topo;
-#define G(col, l) (g0 + (PetscInt64)(col) * L + (l))
+#define G(col, l)  (g0 + (PetscInt64)(col)*L + (l))
 #define FIXED(col) ((col) < c->clamp || (col) >= ncol - c->clamp)
   for (PetscInt col = 0; col < ncol; col++) {
     if (!FIXED(col))
-      for (PetscInt l = 0; l + 1 < L; l++) PetscCall(topology_add_bond(t, G(col, l), G(col, l + 1), 0));
-    if (col + 1 == ncol || (FIXED(col) && FIXED(col + 1))) continue;
-    for (PetscInt l = 0; l < L; l++) PetscCall(topology_add_bond(t, G(col, l), G(col + 1, l), 0));
+      for (PetscInt l = 0; l + 1 < L; l++)
+        PetscCall(topology_add_bond(t, G(col, l), G(col, l + 1), 0));
+    if (col + 1 == ncol || (FIXED(col) && FIXED(col + 1)))
+      continue;
+    for (PetscInt l = 0; l < L; l++)
+      PetscCall(topology_add_bond(t, G(col, l), G(col + 1, l), 0));
     for (PetscInt l = 0; l + 1 < L; l++) { /* the four corners of cell (col..col+1, l..l+1) */
       PetscCall(topology_add_angle(t, G(col + 1, l), G(col, l), G(col, l + 1), 0));
       PetscCall(topology_add_angle(t, G(col, l), G(col + 1, l), G(col + 1, l + 1), 0));
@@ -280,8 +309,8 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
   }
 #undef G
 #undef FIXED
-  PetscCheck(s->dom.lo[1] < y_bottom && c->lot_y0 + c->lot_rows * c->lot_sp < s->dom.hi[1], s->comm, PETSC_ERR_PLIB,
-             "intestine: domain too small");
+  PetscCheck(s->dom.lo[1] < y_bottom && c->lot_y0 + c->lot_rows * c->lot_sp < s->dom.hi[1], s->comm,
+             PETSC_ERR_PLIB, "intestine: domain too small");
   PetscFunctionReturn(0);
 }
 
@@ -292,13 +321,16 @@ static PetscErrorCode intestine_park(intestine_data *c, sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->x[i][0] <= c->x_park) continue;
+    if (ps->type[i] != PTYPE_FLUID || ps->x[i][0] <= c->x_park)
+      continue;
     const PetscInt64 g = ps->gid[i];
-    PetscCheck(g >= 0 && g < c->n_fluid, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine: fluid gid %" PetscInt64_FMT " out of range", g);
+    PetscCheck(g >= 0 && g < c->n_fluid, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "intestine: fluid gid %" PetscInt64_FMT " out of range", g);
     ps->type[i] = PTYPE_WALL;
     ps->x[i][0] = c->lot_x0 + (double)(g / c->lot_rows) * c->lot_sp;
     ps->x[i][1] = c->lot_y0 + (double)(g % c->lot_rows) * c->lot_sp;
-    for (int d = 0; d < 2; d++) ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
+    for (int d = 0; d < 2; d++)
+      ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
     ps->rho[i] = s->sph.rho0;
     ps->drho[i] = 0;
   }
@@ -312,16 +344,20 @@ typedef struct {
 
 static PetscBool intestine_segment_centre(const sim *s, PetscInt i, void *ctx) {
   const seg_sel *q = ctx;
-  if (s->ps.type[i] != PTYPE_SOLID || s->ps.tag[i] != PERISTALSIS_TAG0 + q->k) return PETSC_FALSE;
+  if (s->ps.type[i] != PTYPE_SOLID || s->ps.tag[i] != PERISTALSIS_TAG0 + q->k)
+    return PETSC_FALSE;
   return fabs(s->ps.x0[i][0] - (q->k + 0.5) * q->c->b) < q->c->b / 6 ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscErrorCode intestine_fluid_counts(intestine_data *c, sim *s, PetscInt64 *fluid, PetscInt64 *parked) {
+static PetscErrorCode intestine_fluid_counts(intestine_data *c, sim *s, PetscInt64 *fluid,
+                                             PetscInt64 *parked) {
   PetscInt64 buf[2] = {0, 0};
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    if (s->ps.type[i] == PTYPE_FLUID) buf[0]++;
-    else if (s->ps.gid[i] < c->n_fluid) buf[1]++;
+    if (s->ps.type[i] == PTYPE_FLUID)
+      buf[0]++;
+    else if (s->ps.gid[i] < c->n_fluid)
+      buf[1]++;
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, 2, MPIU_INT64, MPI_SUM, s->comm));
   *fluid = buf[0];
@@ -372,10 +408,12 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   PetscCall(intestine_park(c, s));
   PetscCall(peristalsis_get(c->peri, &tw, &Tw, NULL, NULL, &delay));
   /* rows at step 0 and at output times; a restarted run continues the CSV (csv.h) */
-  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt) PetscFunctionReturn(0);
+  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
+    PetscFunctionReturn(0);
   PetscCall(PetscCalloc2(np + 1, &cw, np + 1, &cr));
   PetscCall(tracking_count(s, TAG_WHITE, np, c->b, 0.0, cw, &nw, &xw));
-  if (c->red) PetscCall(tracking_count(s, TAG_RED, np, c->b, 0.0, cr, &nr, &xr));
+  if (c->red)
+    PetscCall(tracking_count(s, TAG_RED, np, c->b, 0.0, cr, &nr, &xr));
   PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
   double rho_dev, mach;
   PetscInt64 inside, through;
@@ -386,7 +424,8 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   c->inside_max = PetscMax(c->inside_max, inside);
   c->through_max = PetscMax(c->through_max, through);
   PetscCheck(fluid + parked == c->n_fluid, s->comm, PETSC_ERR_PLIB,
-             "intestine: %" PetscInt64_FMT " fluid + %" PetscInt64_FMT " parked != %" PetscInt64_FMT " initial at t = %g s",
+             "intestine: %" PetscInt64_FMT " fluid + %" PetscInt64_FMT " parked != %" PetscInt64_FMT
+             " initial at t = %g s",
              fluid, parked, c->n_fluid, s->t);
   if (s->step == 0) {
     c->n_white0 = nw;
@@ -412,7 +451,8 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
     c->hist_t[c->n_hist] = s->t;
     c->hist_x[c->n_hist++] = xw;
   }
-  if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt) c->alpha_T = alpha;
+  if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt)
+    c->alpha_T = alpha;
   if (s->rank == 0) { /* mpi: rank 0 writes */
     if (!c->csv)
       PetscCall(intestine_open_csv(c, s, tw, Tw));
@@ -428,8 +468,9 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
     if (c->red)
       for (PetscInt k = 0; k <= np; k++)
         INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
-    INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT ",%.6g,%.6g,%" PetscInt64_FMT ",%" PetscInt64_FMT, parked,
-                  fluid, rho_dev, mach, inside, through);
+    INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT ",%.6g,%.6g,%" PetscInt64_FMT
+                  ",%" PetscInt64_FMT,
+                  parked, fluid, rho_dev, mach, inside, through);
     for (PetscInt k = 0; k < np; k++)
       INTESTINE_ROW(",%.8g", lift[k]);
     for (PetscInt k = 0; k < np; k++)
@@ -449,7 +490,8 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
 /* <output_dir>/intestine-summary.csv (key,value; "n/a" for an undefined
  * value, e.g. alpha when the run ends before one period), written to a
  * temporary name and renamed. */
-static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const double *values, PetscInt n) {
+static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const double *values,
+                                              PetscInt n) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   PetscFunctionBeginUser;
   PetscCall(sim_output_path(s, "intestine-summary.csv", path, sizeof(path)));
@@ -458,11 +500,13 @@ static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const d
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
   int ok = fprintf(f, "key,value\n") > 0;
   for (PetscInt i = 0; i < n; i++)
-    ok = (isfinite(values[i]) ? fprintf(f, "%s,%.8g\n", keys[i], values[i]) : fprintf(f, "%s,n/a\n", keys[i])) > 0 && ok;
+    ok = (isfinite(values[i]) ? fprintf(f, "%s,%.8g\n", keys[i], values[i])
+                              : fprintf(f, "%s,n/a\n", keys[i])) > 0 &&
+         ok;
   ok = (fclose(f) == 0) && ok;
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", tmp, path,
-             strerror(errno));
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
   PetscFunctionReturn(0);
 }
 
@@ -480,10 +524,13 @@ static PetscErrorCode intestine_finish(scene *self, sim *s) {
     PetscInt i0 = -1, n0 = 0;
     for (PetscInt i = 0; i < c->n_hist; i++)
       if (peristalsis_value(c->peri, c->hist_t[i], 0) > 0) {
-        if (i0 < 0) i0 = i;
-        if (i == i0 + n0) n0++; /* the first contiguous squeeze only */
+        if (i0 < 0)
+          i0 = i;
+        if (i == i0 + n0)
+          n0++; /* the first contiguous squeeze only */
       }
-    if (i0 >= 0) PetscCall(tracking_slope(c->hist_t + i0, c->hist_x + i0, n0, &uF0));
+    if (i0 >= 0)
+      PetscCall(tracking_slope(c->hist_t + i0, c->hist_x + i0, n0, &uF0));
   }
   PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
   const double nu = s->sph.nu, g = fabs(s->body_accel[1]);
@@ -495,38 +542,71 @@ static PetscErrorCode intestine_finish(scene *self, sim *s) {
   const double h = measured ? c->lift_max : c->amplitude;
   PetscCall(PetscPrintf(s->comm,
                         "intestine: fluid %" PetscInt64_FMT " in the computation + %" PetscInt64_FMT
-                        " overflowed (pocket N+1, parked) = %" PetscInt64_FMT " of %" PetscInt64_FMT " initial\n",
+                        " overflowed (pocket N+1, parked) = %" PetscInt64_FMT " of %" PetscInt64_FMT
+                        " initial\n",
                         fluid, parked, fluid + parked, c->n_fluid));
-  PetscCall(PetscPrintf(s->comm,
-                        "intestine: liquid bounds over the output rows: max |rho/rho0 - 1| %.3g, max Mach %.3g; "
-                        "liquid in the membrane (between its top and bottom layers) at most %" PetscInt64_FMT
-                        ", through it %" PetscInt64_FMT " particles\n",
-                        c->rho_dev_max, c->mach_max, c->inside_max, c->through_max));
-  PetscCall(PetscPrintf(s->comm, "intestine: front velocity u_F = %g m/s (least squares of x_F over %" PetscInt_FMT
-                                 " rows, t in [%g, %g] s)\n",
-                        uF, c->n_hist, c->n_hist ? c->hist_t[0] : NAN, c->n_hist ? c->hist_t[c->n_hist - 1] : NAN));
-  PetscCall(PetscPrintf(s->comm, "intestine: initial front velocity (while pocket 0 squeezes) u_F0 = %g m/s\n", uF0));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "intestine: liquid bounds over the output rows: max |rho/rho0 - 1| %.3g, max Mach %.3g; "
+      "liquid in the membrane (between its top and bottom layers) at most %" PetscInt64_FMT
+      ", through it %" PetscInt64_FMT " particles\n",
+      c->rho_dev_max, c->mach_max, c->inside_max, c->through_max));
+  PetscCall(PetscPrintf(
+      s->comm,
+      "intestine: front velocity u_F = %g m/s (least squares of x_F over %" PetscInt_FMT
+      " rows, t in [%g, %g] s)\n",
+      uF, c->n_hist, c->n_hist ? c->hist_t[0] : NAN, c->n_hist ? c->hist_t[c->n_hist - 1] : NAN));
+  PetscCall(PetscPrintf(
+      s->comm, "intestine: initial front velocity (while pocket 0 squeezes) u_F0 = %g m/s\n", uF0));
   PetscCall(PetscPrintf(s->comm, "intestine: V_w = (N+1) b / T_w = %g m/s (T_w = %g s)\n", Vw, Tw));
   if (reached)
-    PetscCall(PetscPrintf(s->comm, "intestine: alpha after one period = %g, u_P = alpha/(1-alpha) V_w/(N+1) = %g m/s, u_S = alpha V_w = %g m/s\n",
+    PetscCall(PetscPrintf(s->comm,
+                          "intestine: alpha after one period = %g, u_P = alpha/(1-alpha) V_w/(N+1) "
+                          "= %g m/s, u_S = alpha V_w = %g m/s\n",
                           a, uP, uS));
   else
-    PetscCall(PetscPrintf(s->comm, "intestine: alpha after one period: not reached (t_end < delay + T_w = %g s); u_P, u_S undefined\n",
+    PetscCall(PetscPrintf(s->comm,
+                          "intestine: alpha after one period: not reached (t_end < delay + T_w = "
+                          "%g s); u_P, u_S undefined\n",
                           delay + Tw));
   PetscCall(PetscPrintf(s->comm,
-                        "intestine: h = %g m (%s), Re = b u_F/nu = %g, Ga = h^3 g/nu^2 = %g, Fr = V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
-                        h, measured ? "largest measured segment lift" : "configured amplitude A: no lift above dx measured",
+                        "intestine: h = %g m (%s), Re = b u_F/nu = %g, Ga = h^3 g/nu^2 = %g, Fr = "
+                        "V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
+                        h,
+                        measured ? "largest measured segment lift"
+                                 : "configured amplitude A: no lift above dx measured",
                         c->b * uF / nu, h * h * h * g / (nu * nu), Vw / sqrt(g * h), h / c->level));
   PetscCall(csv_close(&c->csv, "intestine.csv"));
   if (s->rank == 0) {
-    const double Re = c->b * uF / nu, Ga = h * h * h * g / (nu * nu), Fr = Vw / sqrt(g * h), Lambda = h / c->level;
-    const double values[] = {c->b,        c->level, nu,       Tw,       Vw,          uF,          uF0,
-                             a,           uP,       uS,       h,        Re,          Ga,          Fr,
-                             Lambda,      c->rho_dev_max, c->mach_max, (double)c->inside_max, (double)c->through_max, (double)fluid,
-                             (double)parked, s->t};
-    static const char *keys[] = {"b",    "level", "nu",  "T_w",  "V_w",         "u_F",      "u_F_initial",
-                                 "alpha_T", "u_P", "u_S", "h",   "Re",          "Ga",       "Fr",
-                                 "Lambda", "rho_dev_max", "mach_max", "in_membrane_max", "through_max", "fluid", "overflow", "t_end"};
+    const double Re = c->b * uF / nu, Ga = h * h * h * g / (nu * nu), Fr = Vw / sqrt(g * h),
+                 Lambda = h / c->level;
+    const double values[] = {c->b,
+                             c->level,
+                             nu,
+                             Tw,
+                             Vw,
+                             uF,
+                             uF0,
+                             a,
+                             uP,
+                             uS,
+                             h,
+                             Re,
+                             Ga,
+                             Fr,
+                             Lambda,
+                             c->rho_dev_max,
+                             c->mach_max,
+                             (double)c->inside_max,
+                             (double)c->through_max,
+                             (double)fluid,
+                             (double)parked,
+                             s->t};
+    static const char *keys[] = {
+        "b",           "level",   "nu",       "T_w",         "V_w",      "u_F",
+        "u_F_initial", "alpha_T", "u_P",      "u_S",         "h",        "Re",
+        "Ga",          "Fr",      "Lambda",   "rho_dev_max", "mach_max", "in_membrane_max",
+        "through_max", "fluid",   "overflow", "t_end"};
     PetscCall(intestine_write_summary(s, keys, values, (PetscInt)(sizeof(keys) / sizeof(keys[0]))));
   }
   PetscFunctionReturn(0);
@@ -578,7 +658,8 @@ static PetscErrorCode intestine_checkpoint_read(scene *self, sim *s, struct chec
 static PetscErrorCode intestine_destroy(scene *self) {
   intestine_data *c = self->data;
   PetscFunctionBeginUser;
-  if (c->csv) fclose(c->csv);
+  if (c->csv)
+    fclose(c->csv);
   PetscCall(PetscFree(c->hist_t));
   PetscCall(PetscFree(c->hist_x));
   PetscCall(PetscFree(self->data));

@@ -3,4 +3,6 @@
 #include "dmhs/channel.h"
 #include "dmhs/scenes.h"
 
-PetscErrorCode poiseuille_scene_create(scene **out) { return channel_scene_create(CHANNEL_POISEUILLE, out); }
+PetscErrorCode poiseuille_scene_create(scene **out) {
+  return channel_scene_create(CHANNEL_POISEUILLE, out);
+}

@@ -6,14 +6,15 @@
 #include "dmhs/sim.h"
 
 typedef struct solid_strip {
-  PetscInt n;             /* columns, clamped ones included */
-  PetscInt n_clamp;       /* first columns made of fixed (wall) particles */
-  double origin[2];       /* first column's layer-0 particle [m] */
-  double along[2];        /* unit vector from column to column */
-  double across[2];       /* unit vector from layer 0 to layer 1 */
-  double spacing;         /* column and layer spacing = bond rest length [m] */
-  double mass, rho;       /* per particle [kg], initial density [kg/m^3] */
-  PetscInt64 first_gid;   /* gids first_gid .. first_gid + 2n - 1: column c layer l = first_gid + 2c + l */
+  PetscInt n;       /* columns, clamped ones included */
+  PetscInt n_clamp; /* first columns made of fixed (wall) particles */
+  double origin[2]; /* first column's layer-0 particle [m] */
+  double along[2];  /* unit vector from column to column */
+  double across[2]; /* unit vector from layer 0 to layer 1 */
+  double spacing;   /* column and layer spacing = bond rest length [m] */
+  double mass, rho; /* per particle [kg], initial density [kg/m^3] */
+  PetscInt64
+      first_gid; /* gids first_gid .. first_gid + 2n - 1: column c layer l = first_gid + 2c + l */
 } solid_strip;
 
 /* Adds the particles (clamped columns as PTYPE_WALL, the last column tagged
@@ -25,6 +26,7 @@ PetscErrorCode solid_strip_build(sim *s, solid_strip *st, PetscInt64 *next_gid);
  * EI = k_s r0 d^2/2 + 2 k_a r0 with d = r0 [N m^2] (layers, plus the corner
  * angles that bending opens and closes by kappa r0/2), kGA = 8 k_a/r0 [N],
  * mass per length 2m/r0. */
-void solid_strip_beam(double k_s, double k_a, double r0, double mass, double *EI, double *kGA, double *mu);
+void solid_strip_beam(double k_s, double k_a, double r0, double mass, double *EI, double *kGA,
+                      double *mu);
 
 #endif

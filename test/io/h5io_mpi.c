@@ -11,7 +11,8 @@ int main(int argc, char **argv) {
   PetscInt64 offset, n_global;
   char path[PETSC_MAX_PATH_LEN];
   hid_t fid;
-  const field_desc fx = {"x", 2, FIELD_REAL, 0, 0, "m"}, fid_desc = {"gid", 1, FIELD_INT64, 0, 0, "1"};
+  const field_desc fx = {"x", 2, FIELD_REAL, 0, 0, "m"},
+                   fid_desc = {"gid", 1, FIELD_INT64, 0, 0, "1"};
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
@@ -44,10 +45,11 @@ int main(int argc, char **argv) {
   PetscCall(h5io_read_rows(PETSC_COMM_WORLD, path, fid, &fid_desc, back, m, offset, n_global));
   PetscCall(h5io_close(path, &fid));
   for (PetscInt i = 0; i < m; i++)
-    PetscCheck(back[i] == offset + i, PETSC_COMM_SELF, PETSC_ERR_PLIB, "rank %d row %" PetscInt_FMT ": %" PetscInt64_FMT,
-               rank, i, back[i]);
+    PetscCheck(back[i] == offset + i, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "rank %d row %" PetscInt_FMT ": %" PetscInt64_FMT, rank, i, back[i]);
   PetscCall(PetscFree(back));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "h5io on %d ranks: %" PetscInt64_FMT " rows written and read back: OK\n",
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                        "h5io on %d ranks: %" PetscInt64_FMT " rows written and read back: OK\n",
                         size, n_global));
   PetscCall(PetscFinalize());
   return 0;

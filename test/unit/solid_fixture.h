@@ -41,14 +41,17 @@ static inline sim *fixture_create(double lx, double ly, PetscBool periodic_x) {
 /* After particles and structure are in: options pass, ghosts, setup, forces at t = 0. */
 static inline void fixture_setup(sim *s) {
   double reach = 0;
-  for (int m = 0; m < s->n_modules; m++) OK(s->modules[m]->set_from_options(s->modules[m], s));
+  for (int m = 0; m < s->n_modules; m++)
+    OK(s->modules[m]->set_from_options(s->modules[m], s));
   for (int m = 0; m < s->n_modules; m++) {
     reach = PetscMax(reach, s->modules[m]->reach);
-    if (s->modules[m]->needs & MODULE_NEEDS_PAIRS) s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
+    if (s->modules[m]->needs & MODULE_NEEDS_PAIRS)
+      s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
   }
   OK(halo_create(&s->hal, reach, PETSC_COMM_SELF));
   for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->setup) OK(s->modules[m]->setup(s->modules[m], s));
+    if (s->modules[m]->setup)
+      OK(s->modules[m]->setup(s->modules[m], s));
   OK(sim_rebuild_neighbours(s));
   OK(sim_compute_forces(s));
 }
@@ -57,7 +60,8 @@ static inline double fixture_energy(sim *s, double P[2]) {
   double e = 0, pe;
   P[0] = P[1] = 0;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    if (s->ps.type[i] == PTYPE_WALL) continue;
+    if (s->ps.type[i] == PTYPE_WALL)
+      continue;
     e += 0.5 * s->ps.mass[i] * (s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
     P[0] += s->ps.mass[i] * s->ps.v[i][0];
     P[1] += s->ps.mass[i] * s->ps.v[i][1];
@@ -75,22 +79,27 @@ static inline void fixture_substeps(sim *s, PetscInt n) {
   s->ts.substeps_option = s->ts.n_sub = n;
   s->ts.subcycling = n != 1 ? PETSC_TRUE : PETSC_FALSE;
   fields_reset();
-  if (s->ts.subcycling) OK(fields_enable("a_hold"));
+  if (s->ts.subcycling)
+    OK(fields_enable("a_hold"));
 }
 
 /* One step as sim_run takes it (fixed dt, no migration). */
 static inline void fixture_step(sim *s) {
   OK(integrate_first_half(s));
-  if (s->ts.subcycling) OK(substep_solids(s));
+  if (s->ts.subcycling)
+    OK(substep_solids(s));
   s->step++;
   s->t = s->step * s->dt;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) domain_wrap(&s->dom, s->ps.x[i]);
+  for (PetscInt i = 0; i < s->ps.n_owned; i++)
+    domain_wrap(&s->dom, s->ps.x[i]);
   OK(sim_rebuild_neighbours(s));
   OK(sim_compute_forces(s));
   OK(integrate_second_half(s));
 }
 
-static inline void fixture_destroy(sim **s) { OK(sim_destroy(s)); }
+static inline void fixture_destroy(sim **s) {
+  OK(sim_destroy(s));
+}
 
 /* deterministic uniform numbers in [-1, 1) */
 static inline double fixture_rand(unsigned long long *state) {

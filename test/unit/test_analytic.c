@@ -22,8 +22,12 @@ static const double l = 1.3e-3, nu = 1.1e-6, F = 2.5e-4, V = 1.7e-3;
 static const double g0 = 3.1e-3, wo_vein = 2.76;
 #define OMEGA(wo) ((wo) * (wo)*nu / (0.25 * l * l))
 
-static double pois(double y, double t) { return analytic_poiseuille(y, t, F, nu, l); }
-static double cou(double y, double t) { return analytic_couette(y, t, V, nu, l); }
+static double pois(double y, double t) {
+  return analytic_poiseuille(y, t, F, nu, l);
+}
+static double cou(double y, double t) {
+  return analytic_couette(y, t, V, nu, l);
+}
 static double wom(double y, double t) {
   return analytic_womersley(y, t, g0, OMEGA(wo_vein), nu, l);
 }
@@ -183,14 +187,10 @@ static void test_womersley_pde(void **state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_poiseuille_limits),
-      cmocka_unit_test(test_couette_limits),
-      cmocka_unit_test(test_poiseuille_pde),
-      cmocka_unit_test(test_couette_pde),
-      cmocka_unit_test(test_womersley_periodic_limit),
-      cmocka_unit_test(test_womersley_amplitude),
-      cmocka_unit_test(test_womersley_start),
-      cmocka_unit_test(test_womersley_pde),
+      cmocka_unit_test(test_poiseuille_limits),        cmocka_unit_test(test_couette_limits),
+      cmocka_unit_test(test_poiseuille_pde),           cmocka_unit_test(test_couette_pde),
+      cmocka_unit_test(test_womersley_periodic_limit), cmocka_unit_test(test_womersley_amplitude),
+      cmocka_unit_test(test_womersley_start),          cmocka_unit_test(test_womersley_pde),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,15 +7,19 @@
 static double ka = 0.01, th0 = M_PI / 2;
 
 static double U_of(const double x[3][2]) {
-  const double a[2] = {x[0][0] - x[1][0], x[0][1] - x[1][1]}, b[2] = {x[2][0] - x[1][0], x[2][1] - x[1][1]};
+  const double a[2] = {x[0][0] - x[1][0], x[0][1] - x[1][1]},
+               b[2] = {x[2][0] - x[1][0], x[2][1] - x[1][1]};
   const double d = angle_theta(a, b) - th0;
   return ka * d * d;
 }
 
 static void check_angle(double theta, double la, double lb, double rot) {
-  double x[3][2] = {{la * cos(rot), la * sin(rot)}, {0, 0}, {lb * cos(rot + theta), lb * sin(rot + theta)}};
-  for (int p = 0; p < 3; p++) x[p][0] += 0.3 * la, x[p][1] -= 0.7 * la; /* away from the origin */
-  const double a[2] = {x[0][0] - x[1][0], x[0][1] - x[1][1]}, b[2] = {x[2][0] - x[1][0], x[2][1] - x[1][1]};
+  double x[3][2] = {
+      {la * cos(rot), la * sin(rot)}, {0, 0}, {lb * cos(rot + theta), lb * sin(rot + theta)}};
+  for (int p = 0; p < 3; p++)
+    x[p][0] += 0.3 * la, x[p][1] -= 0.7 * la; /* away from the origin */
+  const double a[2] = {x[0][0] - x[1][0], x[0][1] - x[1][1]},
+               b[2] = {x[2][0] - x[1][0], x[2][1] - x[1][1]};
   double f[3][2];
   const double U = angle_harmonic_iact(ka, th0, a, b, f[0], f[2]);
   f[1][0] = -(f[0][0] + f[2][0]);
@@ -35,10 +39,12 @@ static void check_angle(double theta, double la, double lb, double rot) {
       xm[p][k] -= h;
       const double fd = -(U_of((const double(*)[2])xp) - U_of((const double(*)[2])xm)) / (2 * h);
       if (!(fabs(f[p][k] - fd) <= 1e-6 * scale))
-        print_error("theta %g theta0 %g particle %d comp %d: F = %.12g, -dU/dx = %.12g\n", theta, th0, p, k, f[p][k], fd);
+        print_error("theta %g theta0 %g particle %d comp %d: F = %.12g, -dU/dx = %.12g\n", theta,
+                    th0, p, k, f[p][k], fd);
       assert_true(fabs(f[p][k] - fd) <= 1e-6 * scale);
     }
-  assert_true(fabs(f[0][0] + f[1][0] + f[2][0]) < 1e-15 * scale && fabs(f[0][1] + f[1][1] + f[2][1]) < 1e-15 * scale);
+  assert_true(fabs(f[0][0] + f[1][0] + f[2][0]) < 1e-15 * scale &&
+              fabs(f[0][1] + f[1][1] + f[2][1]) < 1e-15 * scale);
 }
 
 static void test_angle_gradient(void **state) {

@@ -12,8 +12,8 @@ static double U_nl(const double xi[2], const double xj[2]) {
 }
 
 /* floor: the force at 1e-3 of the length scale, where differences of U lose digits */
-static void check_fd(double (*U)(const double *, const double *), double fr_fn(double r), const double xi[2],
-                     const double xj[2], double floor) {
+static void check_fd(double (*U)(const double *, const double *), double fr_fn(double r),
+                     const double xi[2], const double xj[2], double floor) {
   const double d[2] = {xi[0] - xj[0], xi[1] - xj[1]};
   const double fr = fr_fn(hypot(d[0], d[1]));
   const double h = 1e-9;
@@ -23,7 +23,8 @@ static void check_fd(double (*U)(const double *, const double *), double fr_fn(d
     q[k] -= h;
     const double fd = -(U(p, xj) - U(q, xj)) / (2 * h);
     const double scale = fabs(fr) * hypot(d[0], d[1]) + floor;
-    if (!(fabs(fr * d[k] - fd) <= 1e-6 * scale)) print_error("r = %g: F = %g, -dU/dx = %g\n", hypot(d[0], d[1]), fr * d[k], fd);
+    if (!(fabs(fr * d[k] - fd) <= 1e-6 * scale))
+      print_error("r = %g: F = %g, -dU/dx = %g\n", hypot(d[0], d[1]), fr * d[k], fd);
     assert_true(fabs(fr * d[k] - fd) <= 1e-6 * scale);
     /* and on j: F_j = -F_i */
     double pj[2] = {xj[0], xj[1]}, qj[2] = {xj[0], xj[1]};
@@ -34,8 +35,12 @@ static void check_fd(double (*U)(const double *, const double *), double fr_fn(d
   }
 }
 
-static double fr_harm(double r) { return bond_harmonic_iact(1e6, 1e-4, r); }
-static double fr_nl(double r) { return bond_nonlinear_iact(1e-4, 2.5e-4, 4.5e-4, r); }
+static double fr_harm(double r) {
+  return bond_harmonic_iact(1e6, 1e-4, r);
+}
+static double fr_nl(double r) {
+  return bond_nonlinear_iact(1e-4, 2.5e-4, 4.5e-4, r);
+}
 
 static void test_harmonic_gradient(void **state) {
   (void)state;
@@ -51,7 +56,8 @@ static void test_nonlinear_gradient_and_stiffness(void **state) {
   const double xj[2] = {1e-3, 2e-3}, r0 = 2.5e-4, L = 4.5e-4;
   for (double f = -0.97; f <= 0.97; f += 0.097) {
     const double r = r0 + f * L;
-    if (r <= 0) continue;
+    if (r <= 0)
+      continue;
     const double xi[2] = {xj[0] + 0.28 * r, xj[1] + 0.96 * r};
     check_fd(U_nl, fr_nl, xi, xj, 2e-4 / (L * L) * 4.5e-7);
     /* U'' by differences of U' = -fr r */
@@ -76,7 +82,8 @@ static PetscErrorCode stretched_pair(double f, PetscErrorCode *result) {
   OK(particles_add_owned(&s->ps, 10, PTYPE_SOLID, xa, zero, 1e-5, 1000, NULL));
   OK(particles_add_owned(&s->ps, 11, PTYPE_SOLID, xb, zero, 1e-5, 1000, NULL));
   OK(topology_add_bond(s->topo, 10, 11, 0));
-  for (int m = 0; m < s->n_modules; m++) OK(s->modules[m]->set_from_options(s->modules[m], s));
+  for (int m = 0; m < s->n_modules; m++)
+    OK(s->modules[m]->set_from_options(s->modules[m], s));
   OK(halo_create(&s->hal, 1e-3, PETSC_COMM_SELF));
   OK(s->modules[0]->setup(s->modules[0], s));
   OK(sim_rebuild_neighbours(s));
@@ -84,7 +91,8 @@ static PetscErrorCode stretched_pair(double f, PetscErrorCode *result) {
   *result = sim_compute_forces(s);
   OK(PetscPopErrorHandler());
   if (!*result) {
-    for (PetscInt i = 0; i < 2; i++) assert_true(isfinite(s->ps.a[i][0]) && isfinite(s->ps.a[i][1]));
+    for (PetscInt i = 0; i < 2; i++)
+      assert_true(isfinite(s->ps.a[i][0]) && isfinite(s->ps.a[i][1]));
   }
   fixture_destroy(&s);
   PetscFunctionReturn(0);

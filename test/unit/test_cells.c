@@ -31,8 +31,8 @@ typedef struct {
 static void run_case(const cells_case *cc, uint64_t seed) {
   unit_rng g = {seed};
   const domain d = {.lo = {-0.3, 1.0},
-                   .hi = {-0.3 + cc->L[0], 1.0 + cc->L[1]},
-                   .periodic = {cc->periodic[0], cc->periodic[1]}};
+                    .hi = {-0.3 + cc->L[0], 1.0 + cc->L[1]},
+                    .periodic = {cc->periodic[0], cc->periodic[1]}};
   const double cut = cc->cutoff, cut2 = cut * cut;
   OK(domain_check_ghost_width(&d, cut));
   particles ps;
@@ -77,15 +77,18 @@ static void run_case(const cells_case *cc, uint64_t seed) {
     const double dx = ps.x[i][0] - ps.x[j][0], dy = ps.x[i][1] - ps.x[j][1];
     assert_true(dx * dx + dy * dy < cut2);
     count[i + 1]++;
-    if (j < n) count[j + 1]++;
+    if (j < n)
+      count[j + 1]++;
   }
-  for (PetscInt i = 0; i < n; i++) count[i + 1] += count[i];
+  for (PetscInt i = 0; i < n; i++)
+    count[i + 1] += count[i];
   OK(PetscMalloc1(count[n] + 1, &nb));
   OK(PetscArraycpy(fill, count, n));
   for (PetscInt k = 0; k < cel.n_pairs; k++) {
     const PetscInt i = cel.pair_i[k], j = cel.pair_j[k];
     nb[fill[i]++] = ps.gid[j];
-    if (j < n) nb[fill[j]++] = ps.gid[i];
+    if (j < n)
+      nb[fill[j]++] = ps.gid[i];
   }
 
   /* brute force per owned particle */
@@ -95,10 +98,12 @@ static void run_case(const cells_case *cc, uint64_t seed) {
   for (PetscInt i = 0; i < n; i++) {
     PetscInt m = 0;
     for (PetscInt j = 0; j < n; j++) {
-      if (j == i || (ps.type[i] == PTYPE_WALL && ps.type[j] == PTYPE_WALL)) continue;
+      if (j == i || (ps.type[i] == PTYPE_WALL && ps.type[j] == PTYPE_WALL))
+        continue;
       double r[2] = {ps.x[i][0] - ps.x[j][0], ps.x[i][1] - ps.x[j][1]};
       domain_min_image(&d, r);
-      if (r[0] * r[0] + r[1] * r[1] < cut2) ref[m++] = ps.gid[j];
+      if (r[0] * r[0] + r[1] * r[1] < cut2)
+        ref[m++] = ps.gid[j];
     }
     PetscInt64 *got = nb + count[i];
     const PetscInt n_got = count[i + 1] - count[i];
@@ -124,24 +129,28 @@ static void run_case(const cells_case *cc, uint64_t seed) {
 static void test_periodic_both(void **state) {
   (void)state;
   const cells_case c = {"periodic x,y", {1.0, 0.7}, {PETSC_TRUE, PETSC_TRUE}, 0.093, 600, 0.0, 0};
-  for (uint64_t seed = 1; seed <= 3; seed++) run_case(&c, seed);
+  for (uint64_t seed = 1; seed <= 3; seed++)
+    run_case(&c, seed);
 }
 
 static void test_periodic_x_closed_y(void **state) {
   (void)state;
-  const cells_case c = {"periodic x, closed y", {0.8, 0.6}, {PETSC_TRUE, PETSC_FALSE},
-                        0.071, 500, 0.3, 0};
-  for (uint64_t seed = 11; seed <= 13; seed++) run_case(&c, seed);
+  const cells_case c = {
+      "periodic x, closed y", {0.8, 0.6}, {PETSC_TRUE, PETSC_FALSE}, 0.071, 500, 0.3, 0};
+  for (uint64_t seed = 11; seed <= 13; seed++)
+    run_case(&c, seed);
 }
 
 static void test_box_just_over_twice_cutoff(void **state) {
   (void)state;
-  const cells_case c = {"tight periodic", {2.001 * 0.1, 2.0005 * 0.1}, {PETSC_TRUE, PETSC_TRUE},
-                        0.1, 60, 0.0, 0};
-  for (uint64_t seed = 21; seed <= 30; seed++) run_case(&c, seed);
-  const cells_case c2 = {"tight x, closed y", {2.001 * 0.1, 0.35}, {PETSC_TRUE, PETSC_FALSE},
-                         0.1, 80, 0.2, 0};
-  for (uint64_t seed = 31; seed <= 40; seed++) run_case(&c2, seed);
+  const cells_case c = {
+      "tight periodic", {2.001 * 0.1, 2.0005 * 0.1}, {PETSC_TRUE, PETSC_TRUE}, 0.1, 60, 0.0, 0};
+  for (uint64_t seed = 21; seed <= 30; seed++)
+    run_case(&c, seed);
+  const cells_case c2 = {
+      "tight x, closed y", {2.001 * 0.1, 0.35}, {PETSC_TRUE, PETSC_FALSE}, 0.1, 80, 0.2, 0};
+  for (uint64_t seed = 31; seed <= 40; seed++)
+    run_case(&c2, seed);
 }
 
 static void test_closed_box(void **state) {
@@ -154,11 +163,11 @@ static void test_closed_box(void **state) {
  * (lattice distances^2 / dx^2 are integers, never (0.07/0.03)^2). */
 static void test_lattice(void **state) {
   (void)state;
-  const cells_case c = {"lattice periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_TRUE},
-                        0.07, 20 * 15, 0.0, 0.03};
+  const cells_case c = {
+      "lattice periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_TRUE}, 0.07, 20 * 15, 0.0, 0.03};
   run_case(&c, 5);
-  const cells_case c2 = {"lattice x periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_FALSE},
-                         0.07, 20 * 16, 0.0, 0.03};
+  const cells_case c2 = {
+      "lattice x periodic", {0.6, 0.45}, {PETSC_TRUE, PETSC_FALSE}, 0.07, 20 * 16, 0.0, 0.03};
   run_case(&c2, 6);
 }
 

@@ -42,8 +42,8 @@ static void test_min_image(void **state) {
 static void test_wrap(void **state) {
   (void)state;
   const double cases[][2] = {
-      {0.5, 0.5},         {2.5, 0.5},  {1.7, 1.7},  {0.25, 2.25}, {2.75, 0.75}, {6.75, 0.75},
-      {-5.25, 0.75},      {10.5, 0.5}, {-3.5, 0.5}, {0.5 + 3 * 2.0 + 0.25, 0.75},
+      {0.5, 0.5},   {2.5, 0.5},    {1.7, 1.7},  {0.25, 2.25}, {2.75, 0.75},
+      {6.75, 0.75}, {-5.25, 0.75}, {10.5, 0.5}, {-3.5, 0.5},  {0.5 + 3 * 2.0 + 0.25, 0.75},
   };
   for (size_t c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
     double x[2] = {cases[c][0], 7.5}; /* y outside the closed box: left alone */
@@ -64,8 +64,8 @@ static void test_wrap_round_off(void **state) {
     d.hi[0] = d.lo[0] + unit_range(&g, 0.01, 5.0);
     d.hi[1] = 1.0;
     const double L = domain_length(&d, 0);
-    const double pts[] = {nextafter(d.hi[0], -INFINITY), d.hi[0], nextafter(d.hi[0], INFINITY),
-                          nextafter(d.lo[0], -INFINITY), d.lo[0], nextafter(d.lo[0], INFINITY),
+    const double pts[] = {nextafter(d.hi[0], -INFINITY),      d.hi[0], nextafter(d.hi[0], INFINITY),
+                          nextafter(d.lo[0], -INFINITY),      d.lo[0], nextafter(d.lo[0], INFINITY),
                           d.lo[0] + unit_range(&g, -4, 5) * L};
     for (size_t k = 0; k < sizeof(pts) / sizeof(pts[0]); k++) {
       double x[2] = {pts[k], 0.5};
@@ -111,8 +111,8 @@ static void test_ghost_width_check(void **state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_min_image),       cmocka_unit_test(test_wrap),
-      cmocka_unit_test(test_wrap_round_off),  cmocka_unit_test(test_contains),
+      cmocka_unit_test(test_min_image),         cmocka_unit_test(test_wrap),
+      cmocka_unit_test(test_wrap_round_off),    cmocka_unit_test(test_contains),
       cmocka_unit_test(test_ghost_width_check),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);

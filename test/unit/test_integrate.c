@@ -31,7 +31,8 @@ static void test_dt_limits(void **state) {
   OK(dt_limits_add(&l, "later and smaller", "x", 5e-6));
   assert_true(dt_limits_min(&l, &which) <= 5e-6 && dt_limits_min(&l, &which) > 4.99999e-6);
   assert_int_equal(which, 3);
-  while (l.n < DT_LIMITS_MAX) OK(dt_limits_add(&l, "filler", "x", 1.0));
+  while (l.n < DT_LIMITS_MAX)
+    OK(dt_limits_add(&l, "filler", "x", 1.0));
   assert_int_equal(dt_limits_add(&l, "one too many", "x", 1.0), PETSC_ERR_PLIB);
   assert_int_equal(l.n, DT_LIMITS_MAX);
 }

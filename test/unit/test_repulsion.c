@@ -14,7 +14,8 @@ static void test_repulsion_gradient(void **state) {
       const double fr = repulsion_iact(K, rs, p[c][0], p[c][1], r * r);
       const double Fr = fr * r; /* radial force */
       const double fd = -(repulsion_energy(K, rs, p[c][0], p[c][1], r + h) -
-                          repulsion_energy(K, rs, p[c][0], p[c][1], r - h)) / (2 * h);
+                          repulsion_energy(K, rs, p[c][0], p[c][1], r - h)) /
+                        (2 * h);
       assert_true(Fr > 0);
       assert_true(fabs(Fr - fd) <= 1e-6 * fabs(Fr));
     }
@@ -29,14 +30,17 @@ static void test_repulsion_module(void **state) {
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
   module *m;
   OK(sim_enable_module(s, "repulsion", &m));
-  const double xs[2] = {5e-3, 5e-3}, xf[2] = {5e-3 + 0.6e-4, 5e-3 + 0.3e-4}, xf2[2] = {5e-3 - 0.5e-4, 5e-3};
+  const double xs[2] = {5e-3, 5e-3}, xf[2] = {5e-3 + 0.6e-4, 5e-3 + 0.3e-4},
+               xf2[2] = {5e-3 - 0.5e-4, 5e-3};
   OK(particles_add_owned(&s->ps, 0, PTYPE_SOLID, xs, zero, 2e-5, 1000, NULL));
   OK(particles_add_owned(&s->ps, 1, PTYPE_FLUID, xf, zero, 1e-5, 1000, NULL));
-  OK(particles_add_owned(&s->ps, 2, PTYPE_FLUID, xf2, zero, 1e-5, 1000, NULL)); /* fluid-fluid with 1: no force */
+  OK(particles_add_owned(&s->ps, 2, PTYPE_FLUID, xf2, zero, 1e-5, 1000,
+                         NULL)); /* fluid-fluid with 1: no force */
   fixture_setup(s);
   double P[2] = {0, 0};
   for (int i = 0; i < 3; i++)
-    for (int k = 0; k < 2; k++) P[k] += s->ps.mass[i] * s->ps.a[i][k];
+    for (int k = 0; k < 2; k++)
+      P[k] += s->ps.mass[i] * s->ps.a[i][k];
   const double F1 = s->ps.mass[1] * hypot(s->ps.a[1][0], s->ps.a[1][1]);
   assert_true(F1 > 0);
   assert_true(fabs(P[0]) < 1e-14 * F1 && fabs(P[1]) < 1e-14 * F1);
@@ -44,7 +48,8 @@ static void test_repulsion_module(void **state) {
   assert_true(s->ps.a[1][0] > 0 && s->ps.a[1][1] > 0 && s->ps.a[2][0] < 0);
   double e;
   OK(m->energy(m, s, &e));
-  const double expect = repulsion_energy(4e-4, 1e-4, 4, 2, hypot(0.6e-4, 0.3e-4)) + repulsion_energy(4e-4, 1e-4, 4, 2, 0.5e-4);
+  const double expect = repulsion_energy(4e-4, 1e-4, 4, 2, hypot(0.6e-4, 0.3e-4)) +
+                        repulsion_energy(4e-4, 1e-4, 4, 2, 0.5e-4);
   assert_true(fabs(e - expect) < 1e-12 * expect);
   fixture_destroy(&s);
 }

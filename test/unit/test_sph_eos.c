@@ -68,7 +68,8 @@ static void test_background_pressure(void **state) {
       on.p_background = 250.0;
       assert_true(sph_eos_pressure_bg(&off, rhos[i]) == p);
       assert_close(sph_eos_pressure_bg(&on, rhos[i]), p + 250.0, 1e-12 * (fabs(p) + 250.0));
-      assert_close(sph_eos_density_bg(&on, sph_eos_pressure_bg(&on, rhos[i])), rhos[i], 1e-12 * rhos[i]);
+      assert_close(sph_eos_density_bg(&on, sph_eos_pressure_bg(&on, rhos[i])), rhos[i],
+                   1e-12 * rhos[i]);
     }
 }
 

@@ -96,9 +96,11 @@ static void test_artificial_viscosity_only_when_approaching(void **state) {
     pair_term(&P, 0, 0.0, 0.0, T0);
     pair_term(&P, 0, 1.0, 2.0, T1);
     const double vr = (P.v_i[0] - P.v_j[0]) * P.rij[0] + (P.v_i[1] - P.v_j[1]) * P.rij[1];
-    if (vr >= 0) assert_true(T0[0] == T1[0] && T0[1] == T1[1]);
+    if (vr >= 0)
+      assert_true(T0[0] == T1[0] && T0[1] == T1[1]);
     /* approaching pairs are pushed apart harder */
-    else assert_true((T1[0] - T0[0]) * P.rij[0] + (T1[1] - T0[1]) * P.rij[1] > 0.0);
+    else
+      assert_true((T1[0] - T0[0]) * P.rij[0] + (T1[1] - T0[1]) * P.rij[1] > 0.0);
   }
 }
 
@@ -129,8 +131,14 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
                         sph_density_kind density, unit_rng *g) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
-  s->sph = (sph_params){.kernel = kernel, .h = h, .rho0 = rho0, .c0 = c0, .nu = nu,
-                        .eos = SPH_EOS_TAIT, .density = density, .av_alpha = alpha,
+  s->sph = (sph_params){.kernel = kernel,
+                        .h = h,
+                        .rho0 = rho0,
+                        .c0 = c0,
+                        .nu = nu,
+                        .eos = SPH_EOS_TAIT,
+                        .density = density,
+                        .av_alpha = alpha,
                         .av_beta = 2.0 * alpha};
   s->sph_enabled = PETSC_TRUE;
   s->dom = (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
@@ -175,20 +183,24 @@ static void brute_force(const sim *s, PetscInt i, double a[2], double *drho) {
   const double norm = sph_kernel_norm(sp->kernel, 2, h);
   a[0] = a[1] = *drho = 0.0;
   for (PetscInt j = 0; j < ps->n_owned; j++) {
-    if (j == i) continue;
+    if (j == i)
+      continue;
     double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     domain_min_image(&s->dom, rij);
     const double r = hypot(rij[0], rij[1]);
-    if (r >= h) continue;
+    if (r >= h)
+      continue;
     double w = 0, dwdr = 0, T[2];
     sph_kernel_eval(sp->kernel, 2, norm, 1.0 / h, r, &w, &dwdr);
     const double vv[2] = {ps->v_visc[i][0] - ps->v_visc[j][0], ps->v_visc[i][1] - ps->v_visc[j][1]};
     const double ve[2] = {ps->v_est[i][0] - ps->v_est[j][0], ps->v_est[i][1] - ps->v_est[j][1]};
     /* Morris (1997) written out here, independently of sph_force_iact */
     const double grad = dwdr / r;
-    const double press = -(ps->p[i] / (ps->rho[i] * ps->rho[i]) + ps->p[j] / (ps->rho[j] * ps->rho[j]));
+    const double press =
+        -(ps->p[i] / (ps->rho[i] * ps->rho[i]) + ps->p[j] / (ps->rho[j] * ps->rho[j]));
     const double visc = 2.0 * rho0 * nu / (ps->rho[i] * ps->rho[j]) * grad;
-    for (int d = 0; d < 2; d++) T[d] = press * grad * rij[d] + visc * vv[d];
+    for (int d = 0; d < 2; d++)
+      T[d] = press * grad * rij[d] + visc * vv[d];
     if (sp->av_alpha > 0)
       sph_force_iact_artificial_viscosity(rij, r, dwdr, ps->rho[i], ps->rho[j], ve, sp->av_alpha,
                                           sp->av_beta, c0, h, T);
@@ -218,7 +230,8 @@ static void test_sweep_conserves_momentum(void **state) {
             scale += fabs(s.ps.mass[i] * s.ps.a[i][d]);
             amax = fmax(amax, fabs(s.ps.a[i][d]));
           }
-        for (PetscInt i = 0; i < s.ps.n_owned; i++) dmax = fmax(dmax, fabs(s.ps.drho[i]));
+        for (PetscInt i = 0; i < s.ps.n_owned; i++)
+          dmax = fmax(dmax, fabs(s.ps.drho[i]));
         assert_true(scale > 0);
         if (fabs(P[0]) > 1e-12 * scale || fabs(P[1]) > 1e-12 * scale)
           fail_msg("kernel %d av %d continuity %d: sum m a = (%g, %g), sum |m a| = %g", k, av, cont,
@@ -228,8 +241,10 @@ static void test_sweep_conserves_momentum(void **state) {
           brute_force(&s, i, a, &drho);
           assert_close(s.ps.a[i][0], a[0], 1e-12 * amax);
           assert_close(s.ps.a[i][1], a[1], 1e-12 * amax);
-          if (cont) assert_close(s.ps.drho[i], drho, 1e-12 * dmax);
-          else assert_true(s.ps.drho[i] == 0.0);
+          if (cont)
+            assert_close(s.ps.drho[i], drho, 1e-12 * dmax);
+          else
+            assert_true(s.ps.drho[i] == 0.0);
         }
         destroy_cloud(&s);
       }
@@ -299,7 +314,8 @@ static void test_summation_density(void **state) {
     for (PetscInt i = 0; i < ps->n_owned; i++) {
       double sum = ps->mass[i] * norm; /* W(0) = norm for all three kernels */
       for (PetscInt j = 0; j < ps->n_owned; j++) {
-        if (j == i) continue;
+        if (j == i)
+          continue;
         double rij[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]}, w = 0, dwdr = 0;
         domain_min_image(&s.dom, rij);
         sph_kernel_eval(kernels[k], 2, norm, 1.0 / h, hypot(rij[0], rij[1]), &w, &dwdr);

@@ -27,7 +27,8 @@ static double radial(sph_kernel_kind k, int dim, double r) {
 static double simpson(sph_kernel_kind k, int dim, double a, double b, int n) {
   const double dr = (b - a) / n;
   double sum = radial(k, dim, a) + radial(k, dim, b);
-  for (int i = 1; i < n; i++) sum += (i % 2 ? 4.0 : 2.0) * radial(k, dim, a + i * dr);
+  for (int i = 1; i < n; i++)
+    sum += (i % 2 ? 4.0 : 2.0) * radial(k, dim, a + i * dr);
   return sum * dr / 3.0;
 }
 
@@ -36,8 +37,8 @@ static void test_normalisation(void **state) {
   for (int ik = 0; ik < 3; ik++)
     for (int dim = 1; dim <= 3; dim++) {
       /* split at the cubic's knot so every piece is a polynomial */
-      const double integral = simpson(kinds[ik], dim, 0.0, 0.5 * h, 4000) +
-                              simpson(kinds[ik], dim, 0.5 * h, h, 4000);
+      const double integral =
+          simpson(kinds[ik], dim, 0.0, 0.5 * h, 4000) + simpson(kinds[ik], dim, 0.5 * h, h, 4000);
       if (fabs(integral - 1.0) > 1e-9)
         fail_msg("%s %dD: integral of W = %.15g, expected 1", kind_name[ik], dim, integral);
     }
@@ -68,14 +69,16 @@ static void test_zero_outside_support(void **state) {
     for (int dim = 1; dim <= 3; dim++)
       for (size_t i = 0; i < sizeof(radii) / sizeof(radii[0]); i++) {
         double w = -1, dwdr = -1;
-        sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, radii[i], &w, &dwdr);
+        sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, radii[i], &w,
+                        &dwdr);
         assert_true(w == 0.0 && dwdr == 0.0);
       }
   /* ... and positive, decreasing just inside it */
   for (int ik = 0; ik < 3; ik++)
     for (int dim = 1; dim <= 3; dim++) {
       double w = 0, dwdr = 0;
-      sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, 0.99 * h, &w, &dwdr);
+      sph_kernel_eval(kinds[ik], dim, sph_kernel_norm(kinds[ik], dim, h), 1.0 / h, 0.99 * h, &w,
+                      &dwdr);
       assert_true(w > 0.0 && dwdr < 0.0);
     }
 }

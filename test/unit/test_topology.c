@@ -17,12 +17,14 @@ static void test_periodic_bond(void **state) {
   OK(sim_enable_module(s, "bond_harmonic", NULL));
   OK(sim_enable_module(s, "angle_harmonic", NULL));
   OK(bond_set_default(s, K, r0, 0));
-  const double xa[2] = {0.05e-3, 0.5e-3}, xb[2] = {L - 0.05e-3, 0.5e-3}, xc[2] = {L - 0.05e-3, 0.6e-3};
+  const double xa[2] = {0.05e-3, 0.5e-3}, xb[2] = {L - 0.05e-3, 0.5e-3},
+               xc[2] = {L - 0.05e-3, 0.6e-3};
   OK(particles_add_owned(&s->ps, 7, PTYPE_SOLID, xa, zero, m, 1000, NULL));
   OK(particles_add_owned(&s->ps, 3, PTYPE_SOLID, xb, zero, m, 1000, NULL));
   OK(particles_add_owned(&s->ps, 5, PTYPE_SOLID, xc, zero, m, 1000, NULL));
   OK(topology_add_bond(s->topo, 7, 3, 0));
-  OK(topology_add_angle(s->topo, 7, 3, 5, 0)); /* right angle at 3 across the boundary: no angle force */
+  OK(topology_add_angle(s->topo, 7, 3, 5,
+                        0)); /* right angle at 3 across the boundary: no angle force */
   fixture_setup(s);
   assert_true(s->ps.n_ghost > 0);
   /* r = 1e-4 < r0: 7 is pushed to +x, 3 to -x, by 2 K (r0 - r) */
@@ -51,8 +53,14 @@ static PetscInt count_pairs_between_solids(sim *s) {
 }
 
 static void build_strip(sim *s, PetscInt n, double r0, double m, PetscInt n_clamp) {
-  solid_strip st = {.n = n, .n_clamp = n_clamp, .origin = {4e-3, 5e-3}, .along = {1, 0}, .across = {0, 1},
-                    .spacing = r0, .mass = m, .rho = 1000};
+  solid_strip st = {.n = n,
+                    .n_clamp = n_clamp,
+                    .origin = {4e-3, 5e-3},
+                    .along = {1, 0},
+                    .across = {0, 1},
+                    .spacing = r0,
+                    .mass = m,
+                    .rho = 1000};
   PetscInt64 gid = 100;
   OK(solid_strip_build(s, &st, &gid));
 }
@@ -78,7 +86,8 @@ static void test_exclusions(void **state) {
 
 /* substeps > 1: the same structure on substeps sub-steps of dt/substeps
  * (src/core/substep.c), with the same sub-step as the plain run's step */
-static void conservation(const char *bond_module, double k, double rmax, double ka, PetscInt substeps) {
+static void conservation(const char *bond_module, double k, double rmax, double ka,
+                         PetscInt substeps) {
   const PetscInt n = 4;
   const double r0 = 1e-4, m = 2e-5;
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
@@ -105,11 +114,13 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   double drift = 0, pscale = 0, t[100], e[100];
   int n_samples = 0;
   double dP = 0, impulse = 0; /* round-off scale: eps x the impulses summed over the run */
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) pscale += m * hypot(s->ps.v[i][0], s->ps.v[i][1]);
+  for (PetscInt i = 0; i < s->ps.n_owned; i++)
+    pscale += m * hypot(s->ps.v[i][0], s->ps.v[i][1]);
   const int n_steps = 100000 / (int)substeps;
   for (int step = 1; step <= n_steps; step++) {
     fixture_step(s);
-    for (PetscInt i = 0; i < s->ps.n_owned; i++) impulse += m * s->dt * hypot(s->ps.a[i][0], s->ps.a[i][1]);
+    for (PetscInt i = 0; i < s->ps.n_owned; i++)
+      impulse += m * s->dt * hypot(s->ps.a[i][0], s->ps.a[i][1]);
     if (step % (1000 / (int)substeps) == 0) {
       const double E = fixture_energy(s, P);
       drift = PetscMax(drift, fabs(E - E0) / E0);
@@ -121,11 +132,13 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   /* secular drift: slope of a least-squares line through E(t) over the run */
   double c0, c1, cov00, cov01, cov11, sumsq;
   gsl_set_error_handler_off();
-  assert_int_equal(gsl_fit_linear(t, 1, e, 1, (size_t)n_samples, &c0, &c1, &cov00, &cov01, &cov11, &sumsq), 0);
+  assert_int_equal(
+      gsl_fit_linear(t, 1, e, 1, (size_t)n_samples, &c0, &c1, &cov00, &cov01, &cov11, &sumsq), 0);
   const double secular = fabs(c1 * s->t);
-  print_message("%s, %d sub-steps: over 1e5 sub-steps (dt/substeps = %.3g s = 0.02 sqrt(m/k_max)): max |E - "
-                "E0|/E0 = %.3e, fitted drift %.3e\n",
-                bond_module, (int)substeps, s->dt / (double)substeps, drift, secular);
+  print_message(
+      "%s, %d sub-steps: over 1e5 sub-steps (dt/substeps = %.3g s = 0.02 sqrt(m/k_max)): max |E - "
+      "E0|/E0 = %.3e, fitted drift %.3e\n",
+      bond_module, (int)substeps, s->dt / (double)substeps, drift, secular);
   print_message("  momentum change %.3e kg m/s; eps x summed impulses %.3e; sum m|v0| %.3e\n", dP,
                 DBL_EPSILON * impulse, pscale);
   assert_true(dP < DBL_EPSILON * impulse);
@@ -155,10 +168,8 @@ static void test_conservation_substeps(void **state) {
 
 int main(int argc, char **argv) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_periodic_bond),
-      cmocka_unit_test(test_exclusions),
-      cmocka_unit_test(test_conservation_harmonic),
-      cmocka_unit_test(test_conservation_nonlinear),
+      cmocka_unit_test(test_periodic_bond),         cmocka_unit_test(test_exclusions),
+      cmocka_unit_test(test_conservation_harmonic), cmocka_unit_test(test_conservation_nonlinear),
       cmocka_unit_test(test_conservation_substeps),
   };
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));

@@ -17,18 +17,21 @@
 #define OK(call) assert_int_equal((int)(call), 0)
 
 /* |a - b| <= tol, with both values in the failure message. */
-#define assert_close(a, b, tol)                                                                   \
-  do {                                                                                            \
-    const double a_ = (a), b_ = (b), t_ = (tol);                                                 \
-    if (!(fabs(a_ - b_) <= t_))                                                                   \
+#define assert_close(a, b, tol)                                                                    \
+  do {                                                                                             \
+    const double a_ = (a), b_ = (b), t_ = (tol);                                                   \
+    if (!(fabs(a_ - b_) <= t_))                                                                    \
       fail_msg("%s = %.17g vs %s = %.17g: |diff| %.3e > %.3e", #a, a_, #b, b_, fabs(a_ - b_), t_); \
   } while (0)
 
 static inline int unit_petsc_setup(void **state) {
   (void)state;
-  if (PetscInitializeNoArguments()) return -1;
-  if (events_register()) return -1;
-  if (PetscPushErrorHandler(PetscReturnErrorHandler, NULL)) return -1;
+  if (PetscInitializeNoArguments())
+    return -1;
+  if (events_register())
+    return -1;
+  if (PetscPushErrorHandler(PetscReturnErrorHandler, NULL))
+    return -1;
   return 0;
 }
 
@@ -39,7 +42,9 @@ static inline int unit_petsc_teardown(void **state) {
 }
 
 /* splitmix64: uniform doubles in [0, 1), the same sequence on every machine. */
-typedef struct { uint64_t s; } unit_rng;
+typedef struct {
+  uint64_t s;
+} unit_rng;
 static inline double unit_uniform(unit_rng *g) {
   uint64_t z = (g->s += 0x9e3779b97f4a7c15ull);
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
