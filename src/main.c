@@ -32,6 +32,22 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
   return n;
 }
 
+/* An option is "-" followed by a letter (a negative number such as -1e-3 is
+ * a value). PETSc silently drops a word that is neither an option nor the
+ * value right after one (`-sph_nu 1e-6 1e-7`, or a shell-split value), so
+ * such a run would go on with a default the user meant to change. */
+static int is_option_word(const char *w) {
+  return w[0] == '-' &&
+         ((w[1] >= 'a' && w[1] <= 'z') || (w[1] >= 'A' && w[1] <= 'Z') || w[1] == '-');
+}
+
+static int stray_argument(int argc, char **argv) {
+  for (int k = 1; k < argc; k++)
+    if (!is_option_word(argv[k]) && (k == 1 || !is_option_word(argv[k - 1])))
+      return k;
+  return 0;
+}
+
 int main(int argc, char **argv) {
   sim *s = NULL;
   PetscBool help_only = PETSC_FALSE, traceback = PETSC_FALSE;
@@ -41,6 +57,15 @@ int main(int argc, char **argv) {
    * missing or malformed -options_file) is one line too; never popped: it was
    * allocated before PETSc's tracing allocator, which must not free it */
   PetscPushErrorHandler(dmhs_error_handler, NULL);
+  const int stray = stray_argument(argc, argv);
+  if (stray) {
+    fprintf(
+        stderr,
+        "dmhs: error: stray argument '%s' (word %d of the command line): every value must follow "
+        "its -option\n",
+        argv[stray], stray);
+    return 1;
+  }
   /* -help: dmhs lists its own options (sim_create); PETSc would add its banner,
    * its generic options and every section again, so it does not see it */
   int kept = 1;

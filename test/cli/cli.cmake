@@ -24,6 +24,9 @@ dmhs_cli_fail(cli_unknown_option "unknown or unused option -sph_hh" ${QUICK} -sp
 # a module the scene does not enable must not silently swallow its options
 dmhs_cli_fail(cli_option_not_in_scene "unknown or unused option -body_force"
   -options_file ${DMHS_INPUT}/couette-quick.opts -body_force 1,0 -output_dir ${DMHS_CLI_OUT}/b)
+# a word that is neither an option nor its value (PETSc would drop it silently)
+dmhs_cli_fail(cli_stray_argument "stray argument '1e-6' \\(word 6 of the command line\\)" ${QUICK} -sph_nu 1e-5 1e-6
+  -output_dir ${DMHS_CLI_OUT}/stray)
 dmhs_cli_fail(cli_unknown_scene "-scene intestin: unknown scene" ${QUICK} -scene intestin)
 dmhs_cli_fail(cli_bad_value "-sph_h must be > 0" ${QUICK} -sph_h -1 -output_dir ${DMHS_CLI_OUT}/c)
 dmhs_cli_fail(cli_bad_enum "sph_kernel" ${QUICK} -sph_kernel gauss -output_dir ${DMHS_CLI_OUT}/d)
