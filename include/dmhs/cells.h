@@ -3,6 +3,7 @@
 #ifndef DMHS_CELLS_H
 #define DMHS_CELLS_H
 #include <petscsys.h>
+#include <math.h>
 #include "dmhs/particles.h"
 
 typedef struct cells {
@@ -24,6 +25,19 @@ typedef struct cells {
   const struct topology *excl;
 } cells;
 
+/* The grid of cells_build_pairs over [lo, hi] for a cutoff: n cells per direction (edge >= cutoff)
+ * and the inverse edges, and the cell of a position (outside the region: the edge cell). */
+void cells_grid(const double lo[DMHS_DIM], const double hi[DMHS_DIM], double cutoff,
+                PetscInt n[DMHS_DIM], double inv[DMHS_DIM]);
+static inline PetscInt cells_locate(const double lo[DMHS_DIM], const double inv[DMHS_DIM],
+                                    const PetscInt n[DMHS_DIM], const double x[DMHS_DIM]) {
+  PetscInt ix = (PetscInt)floor((x[0] - lo[0]) * inv[0]);
+  PetscInt iy = (PetscInt)floor((x[1] - lo[1]) * inv[1]);
+  ix = PetscMin(PetscMax(ix, 0), n[0] - 1);
+  iy = PetscMin(PetscMax(iy, 0), n[1] - 1);
+  return iy * n[0] + ix;
+}
+
 PetscErrorCode cells_create(cells *c);
 PetscErrorCode cells_destroy(cells *c);
 /* Sort particles [0, n_owned + n_ghost) into cells covering [lo, hi] and list every pair
@@ -31,5 +45,12 @@ PetscErrorCode cells_destroy(cells *c);
  * owns the first, and walls do not act on each other. */
 PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
                                  const double hi[DMHS_DIM], double cutoff);
+
+/* cells_sort.c: re-sorts the owned rows [0, n_owned) by the cell of the grid above, and by
+ * global id within a cell, moving every FIELD_MIGRATE field (ghosts must be empty). The rows
+ * of a cell are then contiguous and in the order cells_build_pairs lists them, so the sweeps
+ * read memory in order. */
+PetscErrorCode cells_sort_owned_rows(particles *ps, const double lo[DMHS_DIM],
+                                     const double hi[DMHS_DIM], double cutoff);
 
 #endif

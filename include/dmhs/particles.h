@@ -45,7 +45,7 @@ typedef struct particles {
   double *speed;                             /* |v| [m/s] */
   double *displacement;                      /* |x - x0| (minimum image) [m] */
   double (*to_surface)[DMHS_DIM]; /* wall: vector to the nearest wall-surface point [m] */
-  PetscInt *side;                 /* vein: side of the nearest leaflet, -1/0/+1 */
+  PetscInt *side;                 /* vein: side of a leaflet, +-1 upper, +-2 lower, 0 none */
   double (*a_hold)[DMHS_DIM]; /* -solid_substeps: the solid's acceleration from everything but its
                                  own bonds and angles, held over the sub-steps [m/s^2] */
 } particles;

@@ -12,11 +12,15 @@ typedef enum { SPH_DENSITY_CONTINUITY, SPH_DENSITY_SUMMATION } sph_density_kind;
 /* wall velocity for the viscous term: Adami's Shepard mirror, or the quadratic
  * no-slip extrapolation along the wall normal (needs the to_surface field) */
 typedef enum { SPH_WALL_ADAMI, SPH_WALL_QUADRATIC } sph_wall_kind;
+/* the momentum sweep: auto (cells where it applies, else pairs), the pair list, or the
+ * vectorised sweep over cell ranges (sph_force_cells.c); the same bits either way */
+typedef enum { SPH_SWEEP_AUTO, SPH_SWEEP_PAIRS, SPH_SWEEP_CELLS } sph_sweep_kind;
 
 extern const char *const sph_kernel_names[];
 extern const char *const sph_eos_names[];
 extern const char *const sph_density_names[];
 extern const char *const sph_wall_names[];
+extern const char *const sph_sweep_names[];
 
 typedef struct sph_params {
   sph_kernel_kind kernel;
@@ -32,6 +36,7 @@ typedef struct sph_params {
   double delta;        /* density diffusion coefficient (Molteni & Colagrossi 2009; 0 = off) */
   PetscBool kernel_correction; /* corrected operators (sph_correction_iact.h) */
   sph_wall_kind wall;          /* wall velocity extrapolation (sph_wall.c) */
+  sph_sweep_kind sweep;        /* -sph_force_sweep */
 } sph_params;
 
 /* Registers the sph options into s->sph (defaults already there) and returns the module. */

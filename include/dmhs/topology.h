@@ -12,7 +12,7 @@
  * entries, one per owned end. Energies are weighted by the share of owned rows
  * in the entry, so sums over entries (and ranks) count every bond once.
  *
- * Exclusions (LAMMPS special_bonds 0 0 0): 1-2 partners (bonds and the arms of
+ * Exclusions (LAMMPS special_bonds lj/coul 0 0 1 angle yes): 1-2 partners (bonds and the arms of
  * angles) and 1-3 partners (the ends of an angle) are left out of the pair
  * list, hence out of SPH and repulsion sums, unless -special_bonds_include. */
 #ifndef DMHS_TOPOLOGY_H

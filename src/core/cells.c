@@ -4,6 +4,14 @@
 #include "dmhs/cells.h"
 #include "dmhs/topology.h"
 
+void cells_grid(const double lo[DMHS_DIM], const double hi[DMHS_DIM], double cutoff,
+                PetscInt n[DMHS_DIM], double inv[DMHS_DIM]) {
+  for (int k = 0; k < DMHS_DIM; k++) {
+    n[k] = PetscMax(1, (PetscInt)floor((hi[k] - lo[k]) / cutoff));
+    inv[k] = n[k] / (hi[k] - lo[k]);
+  }
+}
+
 PetscErrorCode cells_create(cells *c) {
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(c, sizeof(*c)));
@@ -55,23 +63,17 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
   PetscFunctionBeginUser;
   PetscCheck(cutoff > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cells: cutoff must be > 0");
   c->size = cutoff;
-  PetscInt n_cells = 1;
-  for (int k = 0; k < DMHS_DIM; k++) {
+  double inv[DMHS_DIM];
+  cells_grid(lo, hi, cutoff, c->n, inv);
+  const PetscInt n_cells = c->n[0] * c->n[1];
+  for (int k = 0; k < DMHS_DIM; k++)
     c->lo[k] = lo[k];
-    c->n[k] = PetscMax(1, (PetscInt)floor((hi[k] - lo[k]) / cutoff));
-    n_cells *= c->n[k];
-  }
   PetscCall(cells_ensure(c, n_cells, n));
-  const double inv[DMHS_DIM] = {c->n[0] / (hi[0] - lo[0]), c->n[1] / (hi[1] - lo[1])};
 
   /* counting sort by cell; positions outside the covered region clamp to edge cells */
   PetscCall(PetscArrayzero(c->start, n_cells + 1));
   for (PetscInt i = 0; i < n; i++) {
-    PetscInt ix = (PetscInt)floor((ps->x[i][0] - lo[0]) * inv[0]);
-    PetscInt iy = (PetscInt)floor((ps->x[i][1] - lo[1]) * inv[1]);
-    ix = PetscMin(PetscMax(ix, 0), c->n[0] - 1);
-    iy = PetscMin(PetscMax(iy, 0), c->n[1] - 1);
-    c->cell_of[i] = iy * c->n[0] + ix;
+    c->cell_of[i] = cells_locate(lo, inv, c->n, ps->x[i]);
     c->start[c->cell_of[i] + 1]++;
   }
   for (PetscInt k = 0; k < n_cells; k++)
@@ -153,7 +155,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
             if (both & 3)
               continue;
             const PetscInt i = c->order[a], j = c->order[b];
-            /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 0): only between two
+            /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 1 angle yes): only between two
              * non-liquid particles, so liquid pairs never pay for the lookup */
             if ((both & 4) && excl && topology_excluded(excl, ps, i, j))
               continue;

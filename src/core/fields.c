@@ -55,8 +55,8 @@ static const field_desc table[] = {
      * -sph_wall_extrapolation quadratic; constant for a wall moving rigidly */
     ROW(to_surface, DMHS_DIM, FIELD_REAL,
         FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL, "m"),
-    /* optional: side of the nearest leaflet a fluid particle was last seen on
-     * (-1, +1; 0 = not beside one), for the vein's crossing count */
+    /* optional: side of the leaflet a fluid particle was last seen beside
+     * (+-1 the upper, +-2 the lower; 0 = beside none), for the vein's crossing count */
     ROW(side, 1, FIELD_INT, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "1"),
     /* optional (-solid_substeps): set by the force evaluation, used by the
      * next step's sub-steps; checkpointed so a restart continues them */

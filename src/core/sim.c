@@ -144,6 +144,13 @@ PetscErrorCode sim_enable_module(sim *s, const char *name, module **out) {
 PetscErrorCode sim_rebuild_neighbours(sim *s) {
   double lo[DMHS_DIM], hi[DMHS_DIM];
   PetscFunctionBeginUser;
+  for (int k = 0; k < DMHS_DIM; k++) {
+    lo[k] = s->dom.lo[k] - s->hal.width;
+    hi[k] = s->dom.hi[k] + s->hal.width;
+  }
+  const double cutoff = PetscMax(s->pair_cutoff, s->list_cutoff);
+  if (s->pair_cutoff > 0) /* owned rows in the order the pair build will visit them */
+    PetscCall(cells_sort_owned_rows(&s->ps, lo, hi, cutoff));
   PetscCall(halo_build(&s->hal, &s->dom, &s->part, &s->ps)); /* mpi: + partition */
   /* solids (issue 3): bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves
    * out */
@@ -155,11 +162,7 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
   }
   if (s->pair_cutoff > 0) {
     PetscCall(PetscLogEventBegin(events.pairs, 0, 0, 0, 0));
-    for (int k = 0; k < DMHS_DIM; k++) {
-      lo[k] = s->dom.lo[k] - s->hal.width;
-      hi[k] = s->dom.hi[k] + s->hal.width;
-    }
-    PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, PetscMax(s->pair_cutoff, s->list_cutoff)));
+    PetscCall(cells_build_pairs(&s->cel, &s->ps, lo, hi, cutoff));
     PetscCall(PetscLogEventEnd(events.pairs, 0, 0, 0, 0));
     if (s->debug_halo)
       PetscCall(halo_check_pairs(s)); /* mpi */

@@ -417,7 +417,7 @@ PetscErrorCode topology_enable(sim *s) {
   PetscCall(PetscOptionsBool(
       "-special_bonds_include",
       "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
-      "LAMMPS special_bonds 0 0 0)",
+      "LAMMPS special_bonds lj/coul 0 0 1 angle yes)",
       NULL, s->topo->special_include, &s->topo->special_include, NULL));
   PetscOptionsEnd();
   PetscCall(

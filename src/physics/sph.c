@@ -13,6 +13,8 @@ const char *const sph_eos_names[] = {"tait",         "linear",   "linear_shifted
 const char *const sph_density_names[] = {"continuity", "summation", "sph_density_kind",
                                          "SPH_DENSITY_", NULL};
 const char *const sph_wall_names[] = {"adami", "quadratic", "sph_wall_kind", "SPH_WALL_", NULL};
+const char *const sph_sweep_names[] = {"auto",           "pairs",      "cells",
+                                       "sph_sweep_kind", "SPH_SWEEP_", NULL};
 
 typedef struct {
   sph_wall_work *wall;
@@ -70,6 +72,12 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       "(no-slip quadratic along the wall normal, exact for quadratic profiles; needs the wall "
       "geometry from the scene: default in the channel scenes, else adami)",
       NULL, sph_wall_names, (PetscEnum)sp->wall, (PetscEnum *)&sp->wall, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-sph_force_sweep",
+      "Momentum sweep [1]: auto (the vectorised sweep over cell ranges where it applies: an "
+      "AVX-512 build, no kernel correction, Lucy or Wendland; else the pair list), pairs, or "
+      "cells; both give the same bits",
+      NULL, sph_sweep_names, (PetscEnum)sp->sweep, (PetscEnum *)&sp->sweep, NULL));
   PetscOptionsEnd();
   PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
@@ -116,6 +124,7 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
     PetscCall(sph_wall_compute(s, d->wall));
   else
     PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
+  d->force.visc_is_est = d->has_walls ? PETSC_FALSE : PETSC_TRUE;
   if (s->sph.kernel_correction)
     PetscCall(sph_correction_compute(s, &d->correction));
   if (s->sph.kernel_correction)
@@ -196,6 +205,9 @@ static PetscErrorCode sph_destroy(module *self) {
   PetscFunctionBeginUser;
   PetscCall(sph_wall_destroy(&d->wall));
   PetscCall(PetscFree2(d->force.P, d->force.inv_rho));
+  if (d->force.cells)
+    PetscCall(sph_cells_work_destroy(d->force.cells));
+  PetscCall(PetscFree(d->force.cells));
   PetscCall(sph_correction_destroy(&d->correction));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);

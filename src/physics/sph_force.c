@@ -36,27 +36,33 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
   double(*restrict a)[2] = A->a;
   double *restrict drho = A->drho;
   const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum, h2 = h * h;
+  const double grad_norm = sph_kernel_grad_norm(kernel, 2, norm, inv_h);
   /* the correction pass left F and 1/r^2 of every pair: the artificial
    * viscosity and the density diffusion, which need r and dW/dr, recompute */
   const int cached = corrected && !artificial && !diffusion;
   for (PetscInt k = 0; k < A->n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double rij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    double r = 0.0, dwdr = 0.0, F, inv_r2;
+    double r2 = 0.0, grad = 0.0, F = 0.0, inv_r2 = 0.0;
     if (cached) {
       inv_r2 = A->pair[k][1];
       if (inv_r2 == 0.0)
         continue; /* beyond h */
       F = A->pair[k][0];
     } else {
-      const double r2 = PetscMax(rij[0] * rij[0] + rij[1] * rij[1], SPH_R2_FLOOR * h2);
+      r2 = PetscMax(rij[0] * rij[0] + rij[1] * rij[1], SPH_R2_FLOOR * h2);
       if (r2 >= h2)
         continue; /* listed within the skin, not (yet) interacting */
-      r = sqrt(r2);
-      double w;
-      sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
-      inv_r2 = 1.0 / r2;
-      F = dwdr * (r * inv_r2);
+      const double r = sqrt(r2);
+      if (corrected) { /* F as the correction pass computed it */
+        double w, dwdr;
+        sph_kernel_eval(kernel, 2, norm, inv_h, r, &w, &dwdr);
+        inv_r2 = 1.0 / r2;
+        F = dwdr * (r * inv_r2);
+        grad = F;
+      } else {
+        grad = sph_kernel_grad(kernel, 2, grad_norm, norm, inv_h, r);
+      }
     }
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
     double T[2] = {0.0, 0.0}; /* antisymmetric: a_i += m_j T, a_j -= m_i T */
@@ -73,22 +79,22 @@ SPH_INLINE void force_sweep(sph_kernel_kind kernel, int continuity, int artifici
       a[j][0] += mass[i] * Tj[0];
       a[j][1] += mass[i] * Tj[1];
     } else {
-      sph_force_iact(rij, r, dwdr, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
+      sph_force_iact(rij, grad, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
     }
     if (artificial || continuity) {
       const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
       if (artificial)
-        sph_force_iact_artificial_viscosity(rij, r, dwdr, rho[i], rho[j], vij, A->alpha, A->beta,
+        sph_force_iact_artificial_viscosity(rij, r2, grad, rho[i], rho[j], vij, A->alpha, A->beta,
                                             A->c0, h, T);
       if (continuity) {
         if (!corrected) { /* else -rho_i div_i per particle (sph_force_compute) */
-          const double q = sph_continuity_iact(rij, r, dwdr, vij);
+          const double q = sph_continuity_iact(rij, grad, vij);
           drho[i] += mass[j] * q;
           drho[j] += mass[i] * q;
         }
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
         if (diffusion && A->type[i] != PTYPE_WALL && A->type[j] != PTYPE_WALL) {
-          const double D = sph_density_diffusion_iact(r, dwdr, rho[i], rho[j], A->delta_hs_c0);
+          const double D = sph_density_diffusion_iact(grad, rho[i], rho[j], A->delta_hs_c0);
           drho[i] += mass[j] * inv_rho[j] * D;
           drho[j] -= mass[i] * inv_rho[i] * D;
         }
@@ -155,6 +161,21 @@ PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correct
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_force, 0, 0, 0, 0));
   const PetscInt n = ps->n_owned + ps->n_ghost;
+  PetscCheck(
+      sp->sweep != SPH_SWEEP_CELLS || (!corr && sph_force_cells_applies(s)), s->comm,
+      PETSC_ERR_ARG_INCOMP, "-sph_force_sweep cells: %s",
+      !sph_force_cells_available()
+          ? "this build has no AVX-512 (configure with -DDMHS_NATIVE=ON on a machine that has it)"
+          : "it needs no kernel correction and the Lucy or Wendland kernel; use "
+            "-sph_force_sweep auto or pairs");
+  if (!corr && sph_force_cells_applies(s)) {
+    if (!work->cells)
+      PetscCall(PetscNew(&work->cells));
+    PetscCall(sph_force_cells_compute(s, work->cells, work->visc_is_est));
+    PetscCall(PetscLogFlops(60.0 * (double)s->cel.n_pairs + 4.0 * (double)n));
+    PetscCall(PetscLogEventEnd(events.sph_force, 0, 0, 0, 0));
+    PetscFunctionReturn(0);
+  }
   if (n > work->n_alloc) {
     PetscCall(PetscFree2(work->P, work->inv_rho));
     work->n_alloc = n + n / 4;

@@ -6,14 +6,34 @@
 
 /* sph_force.c: momentum (and continuity) sweep over the pair list; the work
  * arrays hold per-particle p/rho^2 and 1/rho (owned and ghost rows) */
+typedef struct sph_cells_work sph_cells_work;
 typedef struct {
   PetscInt n_alloc;
   double *P, *inv_rho;
+  sph_cells_work *cells; /* the vectorised sweep's copy (sph_force_cells.c) */
+  PetscBool visc_is_est; /* no walls: v_visc is a copy of v_est */
 } sph_force_work;
 /* corr: the per-row tensors of -sph_kernel_correction and pair: the per-pair kernel
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
                                  const double (*pair)[2]);
+/* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
+ * pair-list sweep. Its copy of the fields in cell order: x, y, v_visc (2), v_est (2), p/rho^2,
+ * 1/rho, m, rho, a (2), d rho/dt, and per row the pair flags. */
+#define SPH_CELLS_NFIELDS 13
+typedef struct sph_cells_work {
+  PetscInt n_alloc;
+  double *block, *f[SPH_CELLS_NFIELDS];
+  unsigned char *fl;
+} sph_cells_work;
+/* PETSC_TRUE when this build has the vectorised sweep */
+PetscBool sph_force_cells_available(void);
+/* PETSC_TRUE when it applies to the current settings (-sph_force_sweep, uncorrected, Lucy or
+ * Wendland); the choice depends on settings only, never on a rank's rows */
+PetscBool sph_force_cells_applies(const sim *s);
+/* visc_is_est: v_visc equals v_est (no walls), read once */
+PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc_is_est);
+PetscErrorCode sph_cells_work_destroy(sph_cells_work *w);
 /* sph_correction.c: the tensors of the corrected operators for every row: owned
  * non-wall rows get L, G, B (the identity where the neighbourhood is too sparse),
  * ghost and wall rows zero */

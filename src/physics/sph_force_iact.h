@@ -17,40 +17,42 @@
 #define DMHS_SPH_FORCE_IACT_H
 #include "sph_kernel.h"
 
-/* P = p / rho^2 and 1/rho are per-particle values computed once before the
- * pair loop (sph_force.c), so a pair costs one division (1/r). */
-SPH_INLINE void sph_force_iact(const double rij[2], double r, double dwdr, double P_i, double P_j,
+/* Every pair function takes grad = (dW/dr)/r (sph_kernel_grad), so that
+ * grad_i W_ij = grad r_ij. P = p / rho^2 and 1/rho are per-particle values
+ * computed once before the pair loop (sph_force.c). The operations are written
+ * in the order the vectorised sweep (sph_force_cells.c) repeats lane by lane, so
+ * both give the same bits. */
+SPH_INLINE void sph_force_iact(const double rij[2], double grad, double P_i, double P_j,
                                double inv_rho_i, double inv_rho_j, const double vvisc_ij[2],
                                double mu_sum, double T[2]) {
-  const double grad = dwdr / r; /* grad_i W = grad * r_ij */
   const double press = -(P_i + P_j);
   /* (inv_rho_i * inv_rho_j) first: the product is then symmetric in i, j bit for
    * bit, so T(j, i) == -T(i, j) exactly and sums do not depend on which of the
    * two is listed first (rank-count invariance, doc/parallel.md) */
   const double visc = mu_sum * (inv_rho_i * inv_rho_j) * grad;
-  T[0] = press * grad * rij[0] + visc * vvisc_ij[0];
-  T[1] = press * grad * rij[1] + visc * vvisc_ij[1];
+  const double pg = press * grad;
+  T[0] = pg * rij[0] + visc * vvisc_ij[0];
+  T[1] = pg * rij[1] + visc * vvisc_ij[1];
 }
 
-/* Adds the Monaghan term to T; vij is the (predicted) relative velocity. */
-SPH_INLINE void sph_force_iact_artificial_viscosity(const double rij[2], double r, double dwdr,
+/* Adds the Monaghan term to T; vij is the (predicted) relative velocity, r2 = |r_ij|^2. */
+SPH_INLINE void sph_force_iact_artificial_viscosity(const double rij[2], double r2, double grad,
                                                     double rho_i, double rho_j, const double vij[2],
                                                     double alpha, double beta, double c0, double h,
                                                     double T[2]) {
   const double vr = vij[0] * rij[0] + vij[1] * rij[1];
   if (vr >= 0.0)
     return;
-  const double mu = h * vr / (r * r + 0.01 * h * h);
+  const double mu = h * vr / (r2 + 0.01 * h * h);
   const double Pi = (-alpha * c0 * mu + beta * mu * mu) / (0.5 * (rho_i + rho_j));
-  const double grad = dwdr / r;
-  T[0] -= Pi * grad * rij[0];
-  T[1] -= Pi * grad * rij[1];
+  const double pg = Pi * grad;
+  T[0] -= pg * rij[0];
+  T[1] -= pg * rij[1];
 }
 
 /* The continuity pair scalar q = (v_i - v_j) . grad_i W_ij. */
-SPH_INLINE double sph_continuity_iact(const double rij[2], double r, double dwdr,
-                                      const double vij[2]) {
-  return dwdr / r * (vij[0] * rij[0] + vij[1] * rij[1]);
+SPH_INLINE double sph_continuity_iact(const double rij[2], double grad, const double vij[2]) {
+  return grad * (vij[0] * rij[0] + vij[1] * rij[1]);
 }
 
 /* Density diffusion (delta-SPH, Molteni & Colagrossi 2009, Comput. Phys.
@@ -60,10 +62,10 @@ SPH_INLINE double sph_continuity_iact(const double rij[2], double r, double dwdr
  * i.e. + 2 delta h_s c0 V_j (rho_j - rho_i) (-dW/dr) / r. It damps the
  * density (acoustic) noise that the continuity equation otherwise keeps at
  * low viscosity, without a shear viscosity. Returns the pair scalar
- * D = 2 delta h_s c0 (rho_j - rho_i) (-dW/dr) / r: rho_i gains V_j D, rho_j loses V_i D. */
-SPH_INLINE double sph_density_diffusion_iact(double r, double dwdr, double rho_i, double rho_j,
+ * D = 2 delta h_s c0 (rho_j - rho_i) (-grad): rho_i gains V_j D, rho_j loses V_i D. */
+SPH_INLINE double sph_density_diffusion_iact(double grad, double rho_i, double rho_j,
                                              double delta_hs_c0) {
-  return 2.0 * delta_hs_c0 * (rho_j - rho_i) * (-dwdr) / r;
+  return 2.0 * delta_hs_c0 * (rho_j - rho_i) * (-grad);
 }
 
 #endif

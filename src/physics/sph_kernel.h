@@ -85,4 +85,39 @@ SPH_INLINE void sph_kernel_eval(sph_kernel_kind kind, int dim, double norm, doub
   }
 }
 
+/* The pair loops' gradient factor (dW/dr)/r, for r < h, with the 1/r taken into the
+ * polynomial where the kernel allows (Lucy, Wendland: dW/dr carries a factor q = r/h), so
+ * the hot loops do one square root and no division per pair. grad_norm comes from
+ * sph_kernel_grad_norm once per sweep; at q = 1 the factor is (-)0. */
+SPH_INLINE double sph_kernel_grad_norm(sph_kernel_kind kind, int dim, double norm, double inv_h) {
+  switch (kind) {
+  case SPH_KERNEL_LUCY:
+    return -12.0 * norm * inv_h * inv_h;
+  case SPH_KERNEL_CUBIC:
+    return norm * 4.0 * inv_h * inv_h;
+  case SPH_KERNEL_WENDLAND:
+    return dim == 1 ? -12.0 * norm * inv_h * inv_h : -20.0 * norm * inv_h * inv_h;
+  }
+  return 0.0;
+}
+
+SPH_INLINE double sph_kernel_grad(sph_kernel_kind kind, int dim, double grad_norm, double norm,
+                                  double inv_h, double r) {
+  const double q = r * inv_h, m = 1.0 - q;
+  switch (kind) {
+  case SPH_KERNEL_LUCY:
+    return grad_norm * m * m;
+  case SPH_KERNEL_CUBIC: {
+    const double u = 2.0 * q;
+    if (u < 1.0)
+      return grad_norm * (-3.0 + 2.25 * u); /* (dW/dr)/r = norm (-3 + 9u/4) 4/h^2 */
+    const double v = 2.0 - u;               /* the outer piece has no factor u: divide */
+    return -norm * 0.75 * v * v * 2.0 * inv_h / r;
+  }
+  case SPH_KERNEL_WENDLAND:
+    return dim == 1 ? grad_norm * m * m : grad_norm * m * m * m;
+  }
+  return 0.0;
+}
+
 #endif

@@ -18,7 +18,8 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
   const sph_params *sp = &s->sph;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h,
-               norm = sph_kernel_norm(sp->kernel, 2, sp->h);
+               norm = sph_kernel_norm(sp->kernel, 2, sp->h),
+               grad_norm = sph_kernel_grad_norm(sp->kernel, 2, norm, inv_h);
   const double mu_sum = 2.0 * sp->rho0 * sp->nu;
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   double(*fp)[2], (*L)[4];
@@ -31,21 +32,20 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
     if (r2 >= h2)
       continue;
     const double r = sqrt(r2);
-    double w = 0, dwdr = 0;
-    sph_kernel_eval(sp->kernel, 2, norm, inv_h, r, &w, &dwdr);
+    const double grad = sph_kernel_grad(sp->kernel, 2, grad_norm, norm, inv_h, r);
     const double inv_ri = 1.0 / ps->rho[i], inv_rj = 1.0 / ps->rho[j];
     const double Pi = ps->p[i] * inv_ri * inv_ri, Pj = ps->p[j] * inv_rj * inv_rj;
     const double vvisc[2] = {ps->v_visc[i][0] - ps->v_visc[j][0],
                              ps->v_visc[i][1] - ps->v_visc[j][1]};
     double T[2], Tp[2];
-    sph_force_iact(rij, r, dwdr, Pi, Pj, inv_ri, inv_rj, vvisc, mu_sum, T);
+    sph_force_iact(rij, grad, Pi, Pj, inv_ri, inv_rj, vvisc, mu_sum, T);
     if (artificial) {
       const double vij[2] = {ps->v_est[i][0] - ps->v_est[j][0], ps->v_est[i][1] - ps->v_est[j][1]};
-      sph_force_iact_artificial_viscosity(rij, r, dwdr, ps->rho[i], ps->rho[j], vij, sp->av_alpha,
+      sph_force_iact_artificial_viscosity(rij, r2, grad, ps->rho[i], ps->rho[j], vij, sp->av_alpha,
                                           sp->av_beta, sp->c0, sp->h, T);
     }
     const double zero[2] = {0, 0};
-    sph_force_iact(rij, r, dwdr, Pi, Pj, inv_ri, inv_rj, zero, 0.0, Tp); /* pressure part only */
+    sph_force_iact(rij, grad, Pi, Pj, inv_ri, inv_rj, zero, 0.0, Tp); /* pressure part only */
     const double mm = ps->mass[i] * ps->mass[j];
     const double wv[3] = {-0.5 * mm * rij[0] * T[0], -0.5 * mm * rij[0] * T[1],
                           -0.5 * mm * rij[1] * T[1]};
@@ -57,8 +57,8 @@ PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
       fp[i][c] += mm * Tp[c];
       fp[j][c] -= mm * Tp[c];
     }
-    /* grad_i W_ij = dwdr r_ij / r; (v_j - v_i) = -vvisc */
-    const double g[2] = {dwdr * rij[0] / r, dwdr * rij[1] / r};
+    /* grad_i W_ij = grad r_ij; (v_j - v_i) = -vvisc */
+    const double g[2] = {grad * rij[0], grad * rij[1]};
     const double vi = ps->mass[j] * inv_rj, vj = ps->mass[i] * inv_ri;
     for (int a = 0; a < 2; a++)
       for (int b = 0; b < 2; b++) {

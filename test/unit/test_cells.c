@@ -171,6 +171,61 @@ static void test_lattice(void **state) {
   run_case(&c2, 6);
 }
 
+/* cells_sort_owned_rows: afterwards the rows run by (cell, gid); every particle keeps
+ * its fields (each row's x, v, mass and type still belong to its gid); sorting again
+ * changes nothing; and the pair build then lists the owned rows in row order. */
+static void test_sort_owned_rows(void **state) {
+  (void)state;
+  unit_rng g = {99};
+  const domain d = {.lo = {0.0, 0.0}, .hi = {1.0, 0.7}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
+  const double cut = 0.05;
+  const double lo[2] = {-cut, -cut}, hi[2] = {1.0 + cut, 0.7 + cut};
+  particles ps;
+  OK(particles_create(&ps));
+  const PetscInt n = 600;
+  for (PetscInt i = 0; i < n; i++) {
+    const double x[2] = {unit_range(&g, 0.0, 1.0), unit_range(&g, 0.0, 0.7)};
+    /* fields that identify the particle: v = (gid, -gid), mass = 1 + gid */
+    const PetscInt64 gid = 1000 - 3 * i;
+    const double v[2] = {(double)gid, -(double)gid};
+    OK(particles_add_owned(&ps, gid, i % 5 ? PTYPE_FLUID : PTYPE_WALL, x, v, 1.0 + (double)gid, 1.0,
+                           NULL));
+  }
+  OK(cells_sort_owned_rows(&ps, lo, hi, cut));
+  PetscInt grid[2];
+  double inv[2];
+  cells_grid(lo, hi, cut, grid, inv);
+  for (PetscInt i = 0; i < n; i++) {
+    assert_true(ps.v[i][0] == (double)ps.gid[i] && ps.v[i][1] == -(double)ps.gid[i]);
+    assert_true(ps.mass[i] == 1.0 + (double)ps.gid[i]);
+    assert_int_equal(ps.type[i], ((1000 - ps.gid[i]) / 3) % 5 ? PTYPE_FLUID : PTYPE_WALL);
+    if (i > 0) {
+      const PetscInt c0 = cells_locate(lo, inv, grid, ps.x[i - 1]),
+                     c1 = cells_locate(lo, inv, grid, ps.x[i]);
+      assert_true(c0 < c1 || (c0 == c1 && ps.gid[i - 1] < ps.gid[i]));
+    }
+  }
+  double x_first = ps.x[0][0];
+  OK(cells_sort_owned_rows(&ps, lo, hi, cut));
+  assert_true(ps.x[0][0] == x_first);
+  halo hal;
+  cells cel;
+  OK(halo_create(&hal, cut, PETSC_COMM_SELF));
+  OK(halo_build(&hal, &d, NULL, &ps));
+  OK(cells_create(&cel));
+  OK(cells_build_pairs(&cel, &ps, lo, hi, cut));
+  PetscInt last = -1;
+  for (PetscInt k = 0; k < n + ps.n_ghost; k++)
+    if (cel.order[k] < n) {
+      assert_true(cel.order[k] > last);
+      last = cel.order[k];
+    }
+  assert_int_equal(last, n - 1);
+  OK(cells_destroy(&cel));
+  OK(halo_destroy(&hal));
+  OK(particles_destroy(&ps));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_periodic_both),
@@ -178,6 +233,7 @@ int main(void) {
       cmocka_unit_test(test_box_just_over_twice_cutoff),
       cmocka_unit_test(test_closed_box),
       cmocka_unit_test(test_lattice),
+      cmocka_unit_test(test_sort_owned_rows),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }

@@ -54,9 +54,10 @@ static void pair_term(const pair_state *P, int from_j, double alpha, double beta
   const double vij[2] = {s * (P->v_i[0] - P->v_j[0]), s * (P->v_i[1] - P->v_j[1])};
   const double rho_a = from_j ? P->rho_j : P->rho_i, rho_b = from_j ? P->rho_i : P->rho_j;
   const double p_a = from_j ? P->p_j : P->p_i, p_b = from_j ? P->p_i : P->p_j;
-  sph_force_iact(rij, P->r, P->dwdr, p_a / (rho_a * rho_a), p_b / (rho_b * rho_b), 1.0 / rho_a,
-                 1.0 / rho_b, vij, 2.0 * rho0 * nu, T);
-  sph_force_iact_artificial_viscosity(rij, P->r, P->dwdr, rho_a, rho_b, vij, alpha, beta, c0, h, T);
+  const double grad = P->dwdr / P->r, r2 = P->r * P->r;
+  sph_force_iact(rij, grad, p_a / (rho_a * rho_a), p_b / (rho_b * rho_b), 1.0 / rho_a, 1.0 / rho_b,
+                 vij, 2.0 * rho0 * nu, T);
+  sph_force_iact_artificial_viscosity(rij, r2, grad, rho_a, rho_b, vij, alpha, beta, c0, h, T);
 }
 
 static void test_pair_antisymmetry(void **state) {
@@ -79,8 +80,8 @@ static void test_pair_antisymmetry(void **state) {
     /* m_i a_i + m_j a_j = m_i m_j (T_ij + T_ji) = 0 */
     const double vij[2] = {P.v_i[0] - P.v_j[0], P.v_i[1] - P.v_j[1]};
     const double vji[2] = {-vij[0], -vij[1]}, rji[2] = {-P.rij[0], -P.rij[1]};
-    const double q_ij = sph_continuity_iact(P.rij, P.r, P.dwdr, vij);
-    const double q_ji = sph_continuity_iact(rji, P.r, P.dwdr, vji);
+    const double q_ij = sph_continuity_iact(P.rij, P.dwdr / P.r, vij);
+    const double q_ji = sph_continuity_iact(rji, P.dwdr / P.r, vji);
     assert_true(q_ji == q_ij);
     approaching += vij[0] * P.rij[0] + vij[1] * P.rij[1] < 0;
   }
@@ -127,6 +128,9 @@ static int cloud_coincident = 0;
 
 /* A random cloud of n fluid particles in a periodic [0, Lx) x [0, Ly) box, with
  * ghosts and the pair list built as sim_rebuild_neighbours does. */
+/* every 7th particle a wall (the wall-wall pairs the pair list leaves out) */
+static int cloud_walls = 0;
+
 static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha,
                         sph_density_kind density, unit_rng *g) {
   OK(PetscMemzero(s, sizeof(*s)));
@@ -154,7 +158,8 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
     const double rho = unit_range(g, 0.98, 1.02) * rho0;
     PetscInt idx;
     const double m = unit_range(g, 0.5, 1.5);
-    OK(particles_add_owned(&s->ps, 1000 + i, PTYPE_FLUID, x, v, m, rho, &idx));
+    const particle_type type = cloud_walls && i % 7 == 3 ? PTYPE_WALL : PTYPE_FLUID;
+    OK(particles_add_owned(&s->ps, 1000 + i, type, x, v, m, rho, &idx));
     s->ps.p[idx] = sph_eos_pressure(SPH_EOS_TAIT, rho, rho0, c0);
     s->ps.v_est[idx][0] = v[0] + unit_range(g, -0.1, 0.1); /* distinct from v_visc */
     s->ps.v_est[idx][1] = v[1] + unit_range(g, -0.1, 0.1);
@@ -202,11 +207,11 @@ static void brute_force(const sim *s, PetscInt i, double a[2], double *drho) {
     for (int d = 0; d < 2; d++)
       T[d] = press * grad * rij[d] + visc * vv[d];
     if (sp->av_alpha > 0)
-      sph_force_iact_artificial_viscosity(rij, r, dwdr, ps->rho[i], ps->rho[j], ve, sp->av_alpha,
-                                          sp->av_beta, c0, h, T);
+      sph_force_iact_artificial_viscosity(rij, r * r, grad, ps->rho[i], ps->rho[j], ve,
+                                          sp->av_alpha, sp->av_beta, c0, h, T);
     a[0] += ps->mass[j] * T[0];
     a[1] += ps->mass[j] * T[1];
-    *drho += ps->mass[j] * sph_continuity_iact(rij, r, dwdr, ve);
+    *drho += ps->mass[j] * sph_continuity_iact(rij, grad, ve);
   }
 }
 
@@ -382,8 +387,9 @@ static void brute_force_corrected(const sim *s, PetscInt i, double a[2], double 
                        1.0 / (ps->rho[i] * ps->rho[j]), vv, 2.0 * nu / ps->rho[j], &c, T);
     if (sp->av_alpha > 0) {
       const double ve[2] = {ps->v_est[i][0] - ps->v_est[j][0], ps->v_est[i][1] - ps->v_est[j][1]};
-      sph_force_iact_artificial_viscosity(nb[k].rij, nb[k].r, nb[k].dwdr, ps->rho[i], ps->rho[j],
-                                          ve, sp->av_alpha, sp->av_beta, c0, h, T);
+      sph_force_iact_artificial_viscosity(nb[k].rij, nb[k].r * nb[k].r, nb[k].dwdr / nb[k].r,
+                                          ps->rho[i], ps->rho[j], ve, sp->av_alpha, sp->av_beta, c0,
+                                          h, T);
     }
     a[0] += ps->mass[j] * T[0];
     a[1] += ps->mass[j] * T[1];
@@ -424,6 +430,58 @@ static void test_corrected_sweep(void **state) {
   OK(sph_correction_destroy(&cw));
 }
 
+/* The vectorised sweep over cell ranges (sph_force_cells.c) against the pair-list
+ * sweep: the same bits for every kernel it covers, density form, artificial
+ * viscosity, density diffusion, with walls in the cloud and one particle turned
+ * into a wall after the build (the diffusion follows the current type). */
+static void test_cells_sweep_bitwise(void **state) {
+  (void)state;
+  if (!sph_force_cells_available())
+    skip();
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_WENDLAND};
+  unit_rng g = {77};
+  static sim s;
+  static sph_force_work work;
+  int compared = 0;
+  for (int k = 0; k < 2; k++)
+    for (int dens = 0; dens < 3; dens++)
+      for (int av = 0; av < 2; av++)
+        for (int walls = 0; walls < 2; walls++) {
+          cloud_walls = walls;
+          build_cloud(&s, 400, kernels[k], av ? 0.5 : 0.0,
+                      dens ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION, &g);
+          cloud_walls = 0;
+          s.sph.delta = dens == 2 ? 0.1 : 0.0;
+          if (walls)
+            s.ps.type[5] = PTYPE_WALL;
+          const PetscInt rows = s.ps.n_owned + s.ps.n_ghost;
+          double(*a_pairs)[2], *d_pairs;
+          OK(PetscMalloc2(rows, &a_pairs, rows, &d_pairs));
+          s.sph.sweep = SPH_SWEEP_PAIRS;
+          OK(sph_force_compute(&s, &work, NULL, NULL));
+          OK(PetscArraycpy(a_pairs, s.ps.a, rows));
+          OK(PetscArraycpy(d_pairs, s.ps.drho, rows));
+          OK(PetscArrayzero(s.ps.a, rows));
+          OK(PetscArrayzero(s.ps.drho, rows));
+          s.sph.sweep = SPH_SWEEP_CELLS;
+          OK(sph_force_compute(&s, &work, NULL, NULL));
+          double amax = 0;
+          for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+            assert_memory_equal(s.ps.a[i], a_pairs[i], sizeof(double[2]));
+            assert_memory_equal(&s.ps.drho[i], &d_pairs[i], sizeof(double));
+            amax = fmax(amax, fabs(a_pairs[i][0]));
+          }
+          assert_true(amax > 0);
+          compared++;
+          OK(PetscFree2(a_pairs, d_pairs));
+          destroy_cloud(&s);
+        }
+  assert_int_equal(compared, 24);
+  if (work.cells)
+    OK(sph_cells_work_destroy(work.cells));
+  OK(PetscFree(work.cells));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_pair_antisymmetry),
@@ -433,6 +491,7 @@ int main(void) {
       cmocka_unit_test(test_summation_density),
       cmocka_unit_test(test_coincident_pair),
       cmocka_unit_test(test_corrected_sweep),
+      cmocka_unit_test(test_cells_sweep_bitwise),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }

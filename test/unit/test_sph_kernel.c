@@ -98,12 +98,34 @@ static void test_cubic_continuous_at_knot(void **state) {
   }
 }
 
+/* sph_kernel_grad, the pair loops' (dW/dr)/r without a division where the kernel allows,
+ * equals dW/dr / r of sph_kernel_eval to round-off, over the support. */
+static void test_grad_factor(void **state) {
+  (void)state;
+  const sph_kernel_kind kinds[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  const double h = 2.5e-4;
+  for (int ik = 0; ik < 3; ik++)
+    for (int dim = 1; dim <= 3; dim++) {
+      const double norm = sph_kernel_norm(kinds[ik], dim, h), inv_h = 1.0 / h;
+      const double gn = sph_kernel_grad_norm(kinds[ik], dim, norm, inv_h);
+      for (double f = 0.01; f < 1.0; f += 0.0131) {
+        const double r = f * h;
+        double w = 0, dwdr = 0;
+        sph_kernel_eval(kinds[ik], dim, norm, inv_h, r, &w, &dwdr);
+        const double grad = sph_kernel_grad(kinds[ik], dim, gn, norm, inv_h, r);
+        assert_true(fabs(grad - dwdr / r) <= 1e-13 * fabs(dwdr / r) + 1e-300);
+        assert_true(grad < 0);
+      }
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_normalisation),
       cmocka_unit_test(test_gradient_matches_finite_difference),
       cmocka_unit_test(test_zero_outside_support),
       cmocka_unit_test(test_cubic_continuous_at_knot),
+      cmocka_unit_test(test_grad_factor),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
