@@ -1,5 +1,5 @@
 /* Module agglomeration (src/physics/agglomeration.c): clots that grow from
- * seed particles of the liquid by bonds made at run time (issue 9).
+ * seed particles of the liquid by bonds made at run time.
  *
  * Every -agglomeration_interval of physical time (after the seeds are placed
  * at -agglomeration_start) an event, collective and identical on every rank:

@@ -1,4 +1,4 @@
-/* Series solutions of the start-up channel flows (SPEC 4.1), walls at y = 0 and y = l.
+/* Series solutions of the start-up channel flows (doc/cases.md), walls at y = 0 and y = l.
  *   Poiseuille (body force F from rest):
  *     v_x = F/(2 nu) y (l - y)
  *           - sum_{n>=0} 4 F l^2/(nu pi^3 (2n+1)^3) sin((2n+1) pi y/l) exp(-(2n+1)^2 pi^2 nu t/l^2)

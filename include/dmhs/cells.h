@@ -20,7 +20,7 @@ typedef struct cells {
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
   PetscInt *pair_i, *pair_j;
-  /* Bonded pairs to leave out (solids, issue 3; NULL = none): tested only for
+  /* Bonded pairs to leave out (solids; NULL = none): tested only for
    * pairs of two non-fluid particles, so the liquid's pairs pay nothing. */
   const struct topology *excl;
 } cells;

@@ -10,7 +10,7 @@ typedef struct dmhs_events {
   PetscLogEvent diagnostics, output, check_state;
   PetscLogEvent partition, halo_exchange; /* mpi: METIS; the MPI part of halo build/forward */
   PetscLogEvent checkpoint;
-  PetscLogEvent topology, bond, angle, repulsion, solid_load; /* solids (issue 3) */
+  PetscLogEvent topology, bond, angle, repulsion, solid_load; /* solids */
   PetscLogEvent peristalsis;                                  /* intestine */
   PetscLogEvent substeps, timestep; /* solid sub-steps; the limits before every step */
 } dmhs_events;

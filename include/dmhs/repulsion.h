@@ -1,5 +1,5 @@
 /* Module repulsion: the no-penetration force between solid/wall particles and
- * fluid particles, f = K [(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 for r < r* (SPEC 3). */
+ * fluid particles, f = K [(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 for r < r* (doc/theory.md). */
 #ifndef DMHS_REPULSION_H
 #define DMHS_REPULSION_H
 #include "dmhs/module.h"

@@ -58,7 +58,7 @@ typedef struct sim {
   sph_params sph;
   PetscBool sph_enabled;
   double body_accel[DMHS_DIM]; /* body acceleration on fluid at the current time [m/s^2] */
-  topology *topo; /* bonds and angles (solids, issue 3); NULL in scenes without solids */
+  topology *topo;              /* bonds and angles (solids); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
   scene *scn;

@@ -29,7 +29,7 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("Partition", id, &events.partition));
   PetscCall(PetscLogEventRegister("HaloExchange", id, &events.halo_exchange));
   PetscCall(PetscLogEventRegister("Checkpoint", id, &events.checkpoint));
-  /* solids (issue 3) */
+  /* solids */
   PetscCall(PetscLogEventRegister("Topology", id, &events.topology));
   PetscCall(PetscLogEventRegister("Bond", id, &events.bond));
   PetscCall(PetscLogEventRegister("Angle", id, &events.angle));

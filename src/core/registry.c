@@ -21,9 +21,9 @@ static const struct {
     {"poiseuille", poiseuille_scene_create},
     {"couette", couette_scene_create},
     {"box", box_scene_create},
-    {"cantilever", cantilever_scene_create}, /* solids (issue 3) */
+    {"cantilever", cantilever_scene_create}, /* solids */
     {"flap", flap_scene_create},
-    {"intestine", intestine_scene_create}, /* SPEC 4.2 */
+    {"intestine", intestine_scene_create}, /* doc/cases.md */
     {"vein", vein_scene_create},
 };
 
@@ -33,14 +33,14 @@ static const struct {
 } module_table[] = {
     {"sph", sph_module_create},
     {"body_force", body_force_module_create},
-    /* solids (issue 3) */
+    /* solids */
     {"bond_harmonic", bond_harmonic_module_create},
     {"bond_nonlinear", bond_nonlinear_module_create},
     {"angle_harmonic", angle_harmonic_module_create},
     {"repulsion", repulsion_module_create},
     {"solid_load", solid_load_module_create},
     {"peristalsis", peristalsis_module_create},     /* intestine */
-    {"agglomeration", agglomeration_module_create}, /* vein clots (issue 9) */
+    {"agglomeration", agglomeration_module_create}, /* vein clots */
 };
 
 #define N_SCENES  (sizeof(scene_table) / sizeof(scene_table[0]))

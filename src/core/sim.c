@@ -152,7 +152,7 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
   if (s->pair_cutoff > 0) /* owned rows in the order the pair build will visit them */
     PetscCall(cells_sort_owned_rows(&s->ps, lo, hi, cutoff));
   PetscCall(halo_build(&s->hal, &s->dom, &s->part, &s->ps)); /* mpi: + partition */
-  /* solids (issue 3): bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves
+  /* solids: bonds/angles by gid -> local rows, and the bonded pairs the pair list leaves
    * out */
   if (s->topo) {
     PetscCall(PetscLogEventBegin(events.topology, 0, 0, 0, 0));
@@ -459,7 +459,7 @@ PetscErrorCode sim_destroy(sim **sp) {
     PetscCall(PetscFree(s->scn));
   }
   PetscCall(io_destroy(s));
-  PetscCall(topology_destroy(&s->topo)); /* solids (issue 3) */
+  PetscCall(topology_destroy(&s->topo)); /* solids */
   PetscCall(halo_destroy(&s->hal));
   PetscCall(partition_destroy(&s->part)); /* mpi */
   PetscCall(cells_destroy(&s->cel));

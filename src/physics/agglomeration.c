@@ -1,4 +1,4 @@
-/* Module agglomeration: clots grown by bonds made at run time (issue 9; the
+/* Module agglomeration: clots grown by bonds made at run time (the
  * rules in include/dmhs/agglomeration.h and doc/theory.md "Clot
  * agglomeration"). Enabled by a scene (the vein with -vein_clots); a run
  * without it allocates nothing of this.

@@ -1,4 +1,4 @@
-/* Module angle_harmonic: U = k_a (theta - theta0)^2 (SPEC 2; LAMMPS
+/* Module angle_harmonic: U = k_a (theta - theta0)^2 (doc/theory.md; LAMMPS
  * angle_style harmonic, theta0 in degrees as there). Angle arithmetic
  * (atan2 form, exact near 0 and pi) in angle_iact.h.
  * Time-step limit: a transverse displacement u of an arm of length r turns the
@@ -232,7 +232,7 @@ PetscErrorCode angle_harmonic_module_create(module **m) {
   (*m)->energy = angle_energy_sum;
   (*m)->virial = angle_virial;
   PetscCall(PetscNew((angle_data **)&(*m)->data));
-  /* the vein leaflets' angles (SPEC 4.3) */
+  /* the vein leaflets' angles (doc/cases.md) */
   angle_data *d = (*m)->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     d->k[t] = 0.01;

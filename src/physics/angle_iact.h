@@ -1,4 +1,4 @@
-/* Harmonic angle U = k_a (theta - theta0)^2 (SPEC 2), for the angle i-j-k at
+/* Harmonic angle U = k_a (theta - theta0)^2 (doc/theory.md), for the angle i-j-k at
  * centre j, a = x_i - x_j, b = x_k - x_j. In 2D
  *   theta = atan2(|c|, a.b),  c = a_x b_y - a_y b_x   (in [0, pi]),
  *   dtheta/da = sgn(c) (a_y, -a_x)/|a|^2,  dtheta/db = sgn(c) (-b_y, b_x)/|b|^2,

@@ -3,7 +3,7 @@
  *   a_body(t) = F                         (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
  * plus gravity (0, -g). -body_force_amplitude g0 is F = (g0, 0), the pulsatile
- * drive g0 sin(2 pi t/T) of the vein case (SPEC 4.3). The current value is also left in
+ * drive g0 sin(2 pi t/T) of the vein case (doc/cases.md). The current value is also left in
  * sim->body_accel, where the wall pass reads it for the hydrostatic part of wall pressure. */
 #include <string.h>
 #include "dmhs/sim.h"

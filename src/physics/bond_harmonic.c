@@ -1,4 +1,4 @@
-/* Module bond_harmonic: U = K (r - r0)^2 per bond (SPEC 2), K [J/m^2] and r0 [m]
+/* Module bond_harmonic: U = K (r - r0)^2 per bond (doc/theory.md), K [J/m^2] and r0 [m]
  * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. Bonds of
  * the topology's run-time type (clots, agglomeration.c) are left to bond_clot.c.
  * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
@@ -137,7 +137,7 @@ PetscErrorCode bond_harmonic_module_create(module **m) {
   (*m)->energy = bond_harmonic_energy_sum;
   (*m)->virial = bond_harmonic_virial;
   PetscCall(PetscNew((bond_params **)&(*m)->data));
-  /* the vein leaflets' bonds (SPEC 4.3) until a scene or the options say otherwise */
+  /* the vein leaflets' bonds (doc/cases.md) until a scene or the options say otherwise */
   bond_params *p = (*m)->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     p->k[t] = 1e6;

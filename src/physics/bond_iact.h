@@ -2,8 +2,8 @@
  * against finite-difference gradients of the energy).
  * d = x_i - x_j, r = |d|, x = r - r0. Each function returns fr with
  *   F_i = fr d,  F_j = -fr d,   fr = -U'(r)/r.
- * Harmonic (SPEC 2):  U = K x^2,                     U'  = 2 K x
- * Nonlinear (SPEC 2): U = k_b x^2/(L^2 - x^2),      U'  = 2 k_b L^2 x/(L^2 - x^2)^2
+ * Harmonic (doc/theory.md):  U = K x^2,                     U'  = 2 K x
+ * Nonlinear (doc/theory.md): U = k_b x^2/(L^2 - x^2),      U'  = 2 k_b L^2 x/(L^2 - x^2)^2
  *                     U'' = 2 k_b L^2 (L^2 + 3x^2)/(L^2 - x^2)^3  (stiffness for dt). */
 #ifndef DMHS_BOND_IACT_H
 #define DMHS_BOND_IACT_H

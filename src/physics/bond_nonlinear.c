@@ -1,4 +1,4 @@
-/* Module bond_nonlinear: U = k_b x^2/(r_max^2 - x^2), x = r - r0 (SPEC 2; LAMMPS
+/* Module bond_nonlinear: U = k_b x^2/(r_max^2 - x^2), x = r - r0 (doc/theory.md; LAMMPS
  * bond_style nonlinear), k_b [J], r0 [m], r_max [m] per bond type (-bond_k,
  * -bond_r0, -bond_rmax). Pair arithmetic in bond_iact.h.
  *
@@ -223,7 +223,7 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   (*m)->energy = bond_nonlinear_energy_sum;
   (*m)->virial = bond_nonlinear_virial;
   PetscCall(PetscNew((bond_nonlinear_data **)&(*m)->data));
-  /* the colon membrane's bonds (SPEC 4.2) until a scene or the options say otherwise */
+  /* the colon membrane's bonds (doc/cases.md) until a scene or the options say otherwise */
   bond_params *p = (*m)->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     p->k[t] = 1e-4;

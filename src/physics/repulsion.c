@@ -1,4 +1,4 @@
-/* Module repulsion (SPEC 3): for every listed pair of one fluid and one
+/* Module repulsion (doc/theory.md): for every listed pair of one fluid and one
  * solid/wall particle closer than r*,
  *   F_fluid = K [(r* / r)^p1 - (r* / r)^p2] r_vec/r^2  (r_vec from the other to the fluid one)
  * and, with -repulsion_bodies (scenes with several solid bodies, e.g. the
@@ -306,7 +306,7 @@ PetscErrorCode repulsion_module_create(module **m) {
   (*m)->checkpoint_write = repulsion_checkpoint_write;
   (*m)->checkpoint_read = repulsion_checkpoint_read;
   PetscCall(PetscNew((repulsion_data **)&(*m)->data));
-  /* the vein case's coupling (SPEC 4.3) */
+  /* the vein case's coupling (doc/cases.md) */
   PetscCall(repulsion_set_default(*m, 4e-4, 1e-4, 4, 2));
   PetscFunctionReturn(0);
 }

@@ -1,4 +1,4 @@
-/* No-penetration repulsion (SPEC 3) between a solid/wall and a fluid particle,
+/* No-penetration repulsion (doc/theory.md) between a solid/wall and a fluid particle,
  * d = x_i - x_j, r = |d|, s = r* / r:
  *   F_i = K [s^p1 - s^p2] d / r^2   for r < r*, 0 beyond;   F_j = -F_i
  *   U   = K [(s^p1 - 1)/p1 - (s^p2 - 1)/p2]  (U(r*) = 0, F = -dU/dr d/r)

@@ -25,7 +25,7 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   PetscCheck(b->nx > 0 && b->ny > 0 && b->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-box_nx, -box_ny and -box_dx must be > 0");
   s->dx = b->dx;
-  /* the vein case's liquid (SPEC 4.3) */
+  /* the vein case's liquid (doc/cases.md) */
   s->sph.kernel = SPH_KERNEL_LUCY;
   s->sph.h = 2.5 * b->dx;
   s->sph.rho0 = 1056.0;

@@ -1,5 +1,5 @@
 /* Scene cantilever (no liquid): a two-layer mass-spring strip built the way the
- * vein leaflets are (SPEC 4.3), clamped at its left end, loaded at its tip.
+ * vein leaflets are (doc/cases.md), clamped at its left end, loaded at its tip.
  * It validates the Timoshenko mapping of doc/theory.md:
  *   EI = k_s r0^3/2 + 2 k_a r0 (k_s = U''(r0): 2K harmonic, 2 k_b/r_max^2 nonlinear),
  *   kGA = 8 k_a/r0, mu = 2m/r0, L = (n - n_clamp) r0,
@@ -29,7 +29,7 @@ typedef struct {
   FILE *csv;
 } cantilever_data;
 
-/* scene defaults: the vein leaflet (SPEC 4.3) */
+/* scene defaults: the vein leaflet (doc/cases.md) */
 #define CANTILEVER_K    1e6
 #define CANTILEVER_R0   1e-4
 #define CANTILEVER_KA   0.01

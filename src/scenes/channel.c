@@ -1,4 +1,4 @@
-/* Plane channel (SPEC 4.1): nx x ny liquid particles on a square lattice of
+/* Plane channel (doc/cases.md): nx x ny liquid particles on a square lattice of
  * spacing dx = l/ny between wall layers, periodic in x. The lower wall is at
  * rest; the upper one moves at -wall_speed (Couette). Poiseuille flow is driven
  * by the body force module: constant (start-up Poiseuille) or, with

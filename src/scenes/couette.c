@@ -1,5 +1,5 @@
 /* Scene couette: channel flow started by the upper plate moving at -wall_speed
- * from t = 0 (SPEC 4.1), validated against the series solution. Geometry: channel.c. */
+ * from t = 0 (doc/cases.md), validated against the series solution. Geometry: channel.c. */
 #include "dmhs/channel.h"
 #include "dmhs/scenes.h"
 

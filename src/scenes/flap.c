@@ -1,4 +1,4 @@
-/* Scene flap (issue 3, coupled check): a flexible two-layer mass-spring flap
+/* Scene flap (a coupled check): a flexible two-layer mass-spring flap
  * (solid_strip, SPH + bonds + angles) standing on the lower wall of a
  * periodic channel flow driven by a body force on the liquid. The flap's
  * lowest row is part of the wall (clamped). The liquid sees the flap through

@@ -1,5 +1,5 @@
 /* Scene poiseuille: channel flow driven by a body force F along x from rest
- * (SPEC 4.1), validated against the series solution. Geometry: channel.c. */
+ * (doc/cases.md), validated against the series solution. Geometry: channel.c. */
 #include "dmhs/channel.h"
 #include "dmhs/scenes.h"
 

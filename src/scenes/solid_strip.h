@@ -1,5 +1,5 @@
 /* Internal to the scenes: a two-layer mass-spring strip as the vein leaflets
- * are built (SPEC 4.3), and its Timoshenko beam constants (doc/theory.md,
+ * are built (doc/cases.md), and its Timoshenko beam constants (doc/theory.md,
  * "Mass-spring leaflets as Timoshenko beams"). */
 #ifndef DMHS_SOLID_STRIP_H
 #define DMHS_SOLID_STRIP_H

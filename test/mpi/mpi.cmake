@@ -1,4 +1,4 @@
-# Rank-count invariance (SPEC 5 "Parallel", issue 4). The same run on 1..4
+# Rank-count invariance (doc/parallel.md). The same run on 1..4
 # ranks must give the same gid-sorted final particle states (-dump_final);
 # compare_dumps.py measures max|a - b| / max|a| per column and fails above
 # 1e-10 (the runs are in fact bitwise identical: cells order rows by gid).

@@ -1,4 +1,4 @@
-/* No non-finite value reaches an output file (issue 14). Proves:
+/* No non-finite value reaches an output file. Proves:
  *   - integrate_check_state stops at a non-finite acceleration or density rate
  *     (a finite state otherwise), not only position, velocity, density, pressure;
  *   - io_guard_finite refuses to write a snapshot's or checkpoint's fields when

@@ -1,4 +1,4 @@
-/* Module peristalsis (src/physics/peristalsis.c, SPEC 4.2) against the
+/* Module peristalsis (src/physics/peristalsis.c, doc/cases.md) against the
  * formulas of its header comment, evaluated here by hand:
  *   - the generated schedule of n pockets (R = 2(n-1) + 5 rows): pocket k is
  *     -1 in sub-period 2k-1 and +1 in 2k+1 .. 2k+H (mod R), else 0; written out

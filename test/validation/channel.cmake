@@ -50,7 +50,7 @@ dmhs_channel_case(validation_poiseuille_wendland poiseuille-quick.opts LABEL val
 dmhs_channel_case(validation_poiseuille_cubic_summation poiseuille-quick.opts LABEL validation
   CHECKS 0.1:0.0006 1:0.00001 EXTRA -sph_kernel cubic -sph_density summation)
 
-# Long runs (issue 11, item 6): a steady flow must stay accurate however long it runs.
+# Long runs: a steady flow must stay accurate however long it runs.
 # Quick resolution to t = 4 s at c0 = 0.01 and 0.1 m/s (400x and 4000x the flow speed):
 # L2 < 0.1 % (the requirement) at every output row, none missing, and at the report
 # times about 2x what they measured (0.0032 % at 0.5 s, at most 0.0005 % from 1 s on;

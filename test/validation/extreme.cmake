@@ -1,4 +1,4 @@
-# Stiff and extreme cases (SPEC 5): the flexible flap with very soft and very
+# Stiff and extreme cases (doc/stability.md): the flexible flap with very soft and very
 # rigid leaflet angles, stiff bonds, the highest viscosity of the studies and a
 # strong drive must run stably with the automatic time step (-dt 0) and keep
 # the liquid out of the solid; a stiff bond at a fixed dt is refused before

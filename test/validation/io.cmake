@@ -1,4 +1,4 @@
-# Output, checkpoints and restart (issue 5): scripts in test/io/, each a few
+# Output, checkpoints and restart: scripts in test/io/, each a few
 # seconds on one rank. Output under <build>/test-output/io/<test>.
 set(DMHS_IO_OUT ${CMAKE_BINARY_DIR}/test-output/io)
 set(DMHS_IO_DIR ${CMAKE_CURRENT_LIST_DIR}/../io)

@@ -1,4 +1,4 @@
-# Restart equivalence scene by scene (issue 14): test/io/restart_scene.sh runs
+# Restart equivalence scene by scene: test/io/restart_scene.sh runs
 # a scene to t_end in one go and to t_end/2 + -restart, possibly on other rank
 # counts, and compares every output file (snapshots and checkpoint by gid,
 # bitwise; XDMF; every CSV but its wall-clock columns). Labels io, mpi.
