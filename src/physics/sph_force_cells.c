@@ -328,11 +328,13 @@ PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc
     }
   for (PetscInt k = 0; k < n; k++) {
     const PetscInt i = order[k];
-    RHO[k] = ps->rho[i];
+    IR[k] = ps->rho[i];
     P[k] = ps->p[i];
   }
+  if (artificial || diffusion)
+    PetscCall(PetscArraycpy(RHO, IR, n));
   for (PetscInt k = 0; k < n; k++) { /* vectorised: the divisions eight at a time */
-    IR[k] = 1.0 / RHO[k];
+    IR[k] = 1.0 / IR[k];
     P[k] = P[k] * IR[k] * IR[k];
   }
   for (PetscInt k = 0; k < n; k++) {
