@@ -19,6 +19,7 @@ typedef struct cells {
   PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
+  PetscBool no_pair_list; /* every reader walks the cells: sort and flag only, list no pairs */
   PetscInt *pair_i, *pair_j;
   /* Bonded pairs to leave out (solids; NULL = none): tested only for
    * pairs of two non-fluid particles, so the liquid's pairs pay nothing. */

@@ -9,7 +9,15 @@ struct sim;
 struct dt_limits;
 struct checkpoint_io;
 
-enum { MODULE_NEEDS_PAIRS = 1u << 0, MODULE_NEEDS_BONDS = 1u << 1, MODULE_NEEDS_ANGLES = 1u << 2 };
+/* MODULE_NEEDS_PAIRS: neighbours within the module's reach (sets the cutoff of the cells);
+ * MODULE_CELLS_ONLY, set by the module's setup: it walks the cells itself and reads no pair
+ * list, so a run whose every pair module says so builds none (memory, time). */
+enum {
+  MODULE_NEEDS_PAIRS = 1u << 0,
+  MODULE_NEEDS_BONDS = 1u << 1,
+  MODULE_NEEDS_ANGLES = 1u << 2,
+  MODULE_CELLS_ONLY = 1u << 3
+};
 
 typedef struct module module;
 struct module {

@@ -120,6 +120,9 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
                  (ps->type[i] != PTYPE_FLUID ? 4 : 0);
   }
 
+  c->n_pairs = 0;
+  if (c->no_pair_list)
+    PetscFunctionReturn(0);
   /* half stencil: each unordered pair of cells is visited once */
   static const int stencil[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
   const double cut2 = cutoff * cutoff;

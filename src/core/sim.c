@@ -368,6 +368,11 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->setup)
       PetscCall(s->modules[m]->setup(s->modules[m], s));
+  /* no pair list when every module that wants neighbours walks the cells itself */
+  s->cel.no_pair_list = s->debug_halo ? PETSC_FALSE : PETSC_TRUE;
+  for (int m = 0; m < s->n_modules; m++)
+    if ((s->modules[m]->needs & MODULE_NEEDS_PAIRS) && !(s->modules[m]->needs & MODULE_CELLS_ONLY))
+      s->cel.no_pair_list = PETSC_FALSE;
 
   PetscCall(sim_view(s));
   PetscCall(integrate_stability_report(s));

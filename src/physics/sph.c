@@ -111,6 +111,11 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
              "-sph_wall_extrapolation adami",
              s->scn->name);
   PetscCall(sph_wall_create(&d->wall));
+  /* the vectorised sweep walks the cells; walls, summation density, the correction and the
+   * stress diagnostics read the pair list */
+  if (sph_force_cells_applies(s) && !d->has_walls && s->sph.density == SPH_DENSITY_CONTINUITY &&
+      !fields_enabled("stress_xx"))
+    self->needs |= MODULE_CELLS_ONLY;
   PetscFunctionReturn(0);
 }
 

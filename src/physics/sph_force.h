@@ -17,6 +17,8 @@ typedef struct {
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
                                  const double (*pair)[2]);
+/* flops of one pair inside h (-log_view) */
+double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
 /* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
  * pair-list sweep. Its copy of the fields in cell order: x, y, v_visc (2), v_est (2), p/rho^2,
  * 1/rho, m, rho, a (2), d rho/dt, and per row the pair flags. */
@@ -25,6 +27,7 @@ typedef struct sph_cells_work {
   PetscInt n_alloc;
   double *block, *f[SPH_CELLS_NFIELDS];
   unsigned char *fl;
+  PetscInt64 n_pairs; /* pairs inside h in the last sweep */
 } sph_cells_work;
 /* PETSC_TRUE when this build has the vectorised sweep */
 PetscBool sph_force_cells_available(void);

@@ -48,9 +48,7 @@ PetscBool sph_force_cells_applies(const sim *s) {
   const sph_params *sp = &s->sph;
   if (!SPH_CELLS_SIMD || sp->sweep == SPH_SWEEP_PAIRS)
     return PETSC_FALSE;
-  return !sp->kernel_correction && sp->kernel != SPH_KERNEL_CUBIC && s->cel.order != NULL
-             ? PETSC_TRUE
-             : PETSC_FALSE;
+  return !sp->kernel_correction && sp->kernel != SPH_KERNEL_CUBIC ? PETSC_TRUE : PETSC_FALSE;
 }
 
 PetscErrorCode sph_cells_work_destroy(sph_cells_work *w) {
@@ -91,6 +89,7 @@ typedef struct {
   double x[SPH_CELLS_BUF + 8], y[SPH_CELLS_BUF + 8], q[SPH_CELLS_BUF + 8], d[SPH_CELLS_BUF + 8];
   int n;
   double ax, ay, ad;
+  PetscInt64 pairs; /* pairs inside h: the flop count */
 } own_sums;
 
 SPH_INLINE void own_flush(own_sums *o, int continuity, int diffusion) {
@@ -217,16 +216,18 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
       _mm512_mask_storeu_pd(DR, m, dr);
     }
     o->n += __builtin_popcount((unsigned)m);
+    o->pairs += __builtin_popcount((unsigned)m);
     if (o->n > SPH_CELLS_BUF - 8)
       own_flush(o, continuity, diffusion);
   }
 }
 
-SPH_INLINE void cells_sweep(sph_kernel_kind kernel, int continuity, int artificial, int diffusion,
-                            int same_v, const cells_args *A, const cells *c) {
+SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int artificial,
+                                  int diffusion, int same_v, const cells_args *A, const cells *c) {
   const PetscInt n0 = c->n[0], n1 = c->n[1];
   const PetscInt *restrict start = c->start;
   own_sums o;
+  o.pairs = 0;
   for (PetscInt cy = 0; cy < n1; cy++)
     for (PetscInt cx = 0; cx < n0; cx++) {
       const PetscInt cell = cy * n0 + cx;
@@ -249,11 +250,12 @@ SPH_INLINE void cells_sweep(sph_kernel_kind kernel, int continuity, int artifici
           A->DR[a] = o.ad;
       }
     }
+  return o.pairs;
 }
 
 #define CSWEEP1(name, K, C, AV, D, V)                                                              \
-  static void name(const cells_args *A, const cells *c) {                                          \
-    cells_sweep(K, C, AV, D, V, A, c);                                                             \
+  static PetscInt64 name(const cells_args *A, const cells *c) {                                    \
+    return cells_sweep(K, C, AV, D, V, A, c);                                                      \
   }
 /* each combination with v_est read apart from v_visc (walls) and as one (no walls) */
 #define CSWEEP(name, K, C, AV, D) CSWEEP1(name, K, C, AV, D, 0) CSWEEP1(name##_v, K, C, AV, D, 1)
@@ -273,7 +275,7 @@ CSWEEP(csweep_wendland_cd_av, SPH_KERNEL_WENDLAND, 1, 1, 1)
 /* [Lucy, Wendland][summation, continuity, continuity + diffusion][artificial viscosity][same v] */
 #define CPAIR(name)                                                                                \
   { name, name##_v }
-static void (*const csweeps[2][3][2][2])(const cells_args *, const cells *) = {
+static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *) = {
     {{CPAIR(csweep_lucy), CPAIR(csweep_lucy_av)},
      {CPAIR(csweep_lucy_c), CPAIR(csweep_lucy_c_av)},
      {CPAIR(csweep_lucy_cd), CPAIR(csweep_lucy_cd_av)}},
@@ -292,6 +294,7 @@ PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc
   PetscCheck(SPH_CELLS_SIMD, s->comm, PETSC_ERR_SUP,
              "-sph_force_sweep cells needs a build with AVX-512 (configure with "
              "-DDMHS_NATIVE=ON, the default, on a machine that has it)");
+  PetscCheck(c->order, PETSC_COMM_SELF, PETSC_ERR_ORDER, "sph cells sweep before the first build");
   PetscCheck(c->start[c->n[0] * c->n[1]] == n, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "sph cells sweep: %" PetscInt_FMT " rows, the last build sorted %" PetscInt_FMT, n,
              c->start[c->n[0] * c->n[1]]);
@@ -379,7 +382,8 @@ PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc
       .two_dhc = 2.0 * (sp->delta * 0.5 * sp->h * sp->c0),
   };
   const int density = continuity ? (diffusion ? 2 : 1) : 0;
-  csweeps[sp->kernel == SPH_KERNEL_WENDLAND][density][artificial][visc_is_est ? 1 : 0](&A, c);
+  w->n_pairs =
+      csweeps[sp->kernel == SPH_KERNEL_WENDLAND][density][artificial][visc_is_est ? 1 : 0](&A, c);
   for (PetscInt k = 0; k < n; k++) {
     const PetscInt i = order[k];
     ps->a[i][0] = AX[k];
