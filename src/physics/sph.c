@@ -127,7 +127,7 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
   PetscCall(sph_eos_compute(s));
   if (d->has_walls)
     PetscCall(sph_wall_compute(s, d->wall));
-  else
+  else if (!(self->needs & MODULE_CELLS_ONLY)) /* else only the cells sweep reads it: v_est */
     PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
   d->force.visc_is_est = d->has_walls ? PETSC_FALSE : PETSC_TRUE;
   if (s->sph.kernel_correction)

@@ -318,10 +318,13 @@ PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc
     X[k] = ps->x[i][0];
     Y[k] = ps->x[i][1];
   }
+  /* without walls v_visc is a copy of v_est (sph.c), which a cells-only run skips */
+  const double(*vv)[2] =
+      visc_is_est ? (const double(*)[2])ps->v_est : (const double(*)[2])ps->v_visc;
   for (PetscInt k = 0; k < n; k++) {
     const PetscInt i = order[k];
-    VX[k] = ps->v_visc[i][0];
-    VY[k] = ps->v_visc[i][1];
+    VX[k] = vv[i][0];
+    VY[k] = vv[i][1];
   }
   if (need_est)
     for (PetscInt k = 0; k < n; k++) {
