@@ -37,6 +37,10 @@ typedef struct sph_params {
   PetscBool kernel_correction; /* corrected operators (sph_correction_iact.h) */
   sph_wall_kind wall;          /* wall velocity extrapolation (sph_wall.c) */
   sph_sweep_kind sweep;        /* -sph_force_sweep */
+  /* continuity: the force evaluation sees the density predicted for the end of
+   * the step, rho^n + dt drho^n, corrected to the trapezoid after it
+   * (integrate.c), instead of the half-step rho^n + dt/2 drho^n */
+  PetscBool density_predict;
 } sph_params;
 
 /* Registers the sph options into s->sph (defaults already there) and returns the module. */

@@ -61,6 +61,9 @@ static const field_desc table[] = {
     /* optional (-solid_substeps): set by the force evaluation, used by the
      * next step's sub-steps; checkpointed so a restart continues them */
     ROW(a_hold, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "m/s^2"),
+    /* optional (-sph_density_predict): the step's first density rate, set in the
+     * first half step and used in the second; a step never spans a checkpoint */
+    ROW(drho_prev, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_OPTIONAL, "kg/m^3/s"),
 };
 
 #define N_ROWS (sizeof(table) / sizeof(table[0]))

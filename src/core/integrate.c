@@ -51,10 +51,31 @@ double dt_limits_min(const dt_limits *l, int *which) {
   return best;
 }
 
+/* The density the force evaluation sees: rho^n + dt/2 drho^n (the kick's), or
+ * with -sph_density_predict rho^n + dt drho^n, whose drho^n the second half
+ * takes back for the trapezoid rho^n + dt/2 (drho^n + drho^{n+1}). The
+ * half-step density lags the drifted positions by dt/2, and a pressure
+ * oscillation of frequency omega then grows at omega^2 dt/4 (doc/theory.md). */
+static inline void integrate_density_first(particles *ps, PetscInt i, double dt, int predict) {
+  if (predict) {
+    ps->drho_prev[i] = ps->drho[i];
+    ps->rho[i] += dt * ps->drho[i];
+  } else
+    ps->rho[i] += 0.5 * dt * ps->drho[i];
+}
+
+static inline void integrate_density_second(particles *ps, PetscInt i, double dt, int predict) {
+  if (predict)
+    ps->rho[i] += 0.5 * dt * (ps->drho[i] - ps->drho_prev[i]);
+  else
+    ps->rho[i] += 0.5 * dt * ps->drho[i];
+}
+
 PetscErrorCode integrate_first_half(sim *s) {
   particles *ps = &s->ps;
   const double dt = s->dt, half = 0.5 * s->dt;
   const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  const int predict = continuity && s->sph.density_predict;
   const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
@@ -62,7 +83,7 @@ PetscErrorCode integrate_first_half(sim *s) {
     if (subcycled && ps->type[i] == PTYPE_SOLID) {
       /* its density belongs to the liquid's step; its motion to the sub-steps */
       if (continuity)
-        ps->rho[i] += half * ps->drho[i];
+        integrate_density_first(ps, i, dt, predict);
       continue;
     }
     if (ps->type[i] == PTYPE_WALL) {
@@ -78,7 +99,7 @@ PetscErrorCode integrate_first_half(sim *s) {
       ps->x[i][k] += dt * ps->v[i][k];
     }
     if (continuity)
-      ps->rho[i] += half * ps->drho[i];
+      integrate_density_first(ps, i, dt, predict);
   }
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -88,6 +109,7 @@ PetscErrorCode integrate_second_half(sim *s) {
   particles *ps = &s->ps;
   const double half = 0.5 * s->dt;
   const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
+  const int predict = continuity && s->sph.density_predict;
   /* sub-cycled solids: the second half kick of their last sub-step */
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
@@ -99,13 +121,13 @@ PetscErrorCode integrate_second_half(sim *s) {
       for (int k = 0; k < DMHS_DIM; k++)
         ps->v[i][k] += half_solid * ps->a[i][k];
       if (continuity)
-        ps->rho[i] += half * ps->drho[i];
+        integrate_density_second(ps, i, s->dt, predict);
       continue;
     }
     for (int k = 0; k < DMHS_DIM; k++)
       ps->v[i][k] += half * ps->a[i][k];
     if (continuity)
-      ps->rho[i] += half * ps->drho[i];
+      integrate_density_second(ps, i, s->dt, predict);
   }
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);

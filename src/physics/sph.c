@@ -78,11 +78,22 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       "AVX-512 build, no kernel correction, Lucy or Wendland; else the pair list), pairs, or "
       "cells; both give the same bits",
       NULL, sph_sweep_names, (PetscEnum)sp->sweep, (PetscEnum *)&sp->sweep, NULL));
+  PetscCall(PetscOptionsBool(
+      "-sph_density_predict",
+      "Continuity: the forces see the density predicted for the end of the step, rho + dt "
+      "drho, corrected to the trapezoid after them, instead of the half-step rho + dt/2 drho, "
+      "which amplifies pressure oscillations at a rate omega^2 dt/4 (doc/theory.md; default "
+      "true in the vein, else false)",
+      NULL, sp->density_predict, &sp->density_predict, NULL));
   PetscOptionsEnd();
   PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
   PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
+  PetscCheck(!sp->density_predict || sp->density == SPH_DENSITY_CONTINUITY, s->comm,
+             PETSC_ERR_ARG_INCOMP, "-sph_density_predict needs -sph_density continuity");
+  if (sp->density_predict)
+    PetscCall(fields_enable("drho_prev"));
   PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
   PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)",
              sp->rho0);
@@ -190,6 +201,9 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
   if (sp->delta > 0)
     PetscCall(
         PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
+  if (sp->density_predict)
+    PetscCall(PetscViewerASCIIPrintf(v, "sph: forces see the density predicted for the end of "
+                                        "the step (-sph_density_predict)\n"));
   if (sp->kernel_correction)
     PetscCall(PetscViewerASCIIPrintf(v,
                                      "sph: kernel correction: pressure gradient exact for linear p "

@@ -205,6 +205,16 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
    * a plain channel at rest, dt = 0.47 of the sound-speed limit, at t ~ 0.08 s);
    * delta-SPH diffusion damps it without adding shear viscosity (doc/theory.md) */
   s->sph.delta = 0.1;
+  /* a liquid particle drawn into the gap between the sinus's curved wall and the
+   * liquid (a lattice row that is neither: liquid keeps dx/2 from the surface,
+   * walls 0.45 dx) keeps one or two liquid neighbours among eight walls: it
+   * rings against the walls' pressure (omega ~ 2e4 rad/s at dx = 5e-4 m) without
+   * the diffusion above, which does not act on wall pairs, and the half-step
+   * density of the kick amplifies that at omega^2 dt/4 (measured at dt = 4e-6 s:
+   * |rho/rho0 - 1| 6.5 % at t = 0.17 s, a pressure pulse that moved the tips by
+   * 5 % of their range); the density predicted for the end of the step does not
+   * (doc/stability.md, "Vein") */
+  s->sph.density_predict = PETSC_TRUE;
   /* behind the valve the jet's shear brings liquid particles together faster
    * than the blood's viscosity resolves at these spacings (pairs at 0.12 dx and
    * +-1e4 Pa spikes measured at dx = 5e-4 m); a weak Monaghan viscosity
