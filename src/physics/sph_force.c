@@ -133,39 +133,18 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
   }
 /* each combination plain and corrected (-sph_kernel_correction) */
 #define SWEEP(name, K, C, AV, D) SWEEP1(name, K, C, AV, D, 0) SWEEP1(name##_kgc, K, C, AV, D, 1)
-SWEEP(sweep_lucy, SPH_KERNEL_LUCY, 0, 0, 0)
-SWEEP(sweep_lucy_c, SPH_KERNEL_LUCY, 1, 0, 0)
-SWEEP(sweep_lucy_av, SPH_KERNEL_LUCY, 0, 1, 0)
-SWEEP(sweep_lucy_c_av, SPH_KERNEL_LUCY, 1, 1, 0)
-SWEEP(sweep_lucy_cd, SPH_KERNEL_LUCY, 1, 0, 1)
-SWEEP(sweep_lucy_cd_av, SPH_KERNEL_LUCY, 1, 1, 1)
-SWEEP(sweep_cubic, SPH_KERNEL_CUBIC, 0, 0, 0)
-SWEEP(sweep_cubic_c, SPH_KERNEL_CUBIC, 1, 0, 0)
-SWEEP(sweep_cubic_av, SPH_KERNEL_CUBIC, 0, 1, 0)
-SWEEP(sweep_cubic_c_av, SPH_KERNEL_CUBIC, 1, 1, 0)
-SWEEP(sweep_cubic_cd, SPH_KERNEL_CUBIC, 1, 0, 1)
-SWEEP(sweep_cubic_cd_av, SPH_KERNEL_CUBIC, 1, 1, 1)
-SWEEP(sweep_wendland, SPH_KERNEL_WENDLAND, 0, 0, 0)
-SWEEP(sweep_wendland_c, SPH_KERNEL_WENDLAND, 1, 0, 0)
-SWEEP(sweep_wendland_av, SPH_KERNEL_WENDLAND, 0, 1, 0)
-SWEEP(sweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1, 0)
-SWEEP(sweep_wendland_cd, SPH_KERNEL_WENDLAND, 1, 0, 1)
-SWEEP(sweep_wendland_cd_av, SPH_KERNEL_WENDLAND, 1, 1, 1)
+SPH_SWEEP_VARIANTS(SWEEP, sweep_lucy, SPH_KERNEL_LUCY)
+SPH_SWEEP_VARIANTS(SWEEP, sweep_cubic, SPH_KERNEL_CUBIC)
+SPH_SWEEP_VARIANTS(SWEEP, sweep_wendland, SPH_KERNEL_WENDLAND)
 
 /* [kernel][density: summation, continuity, continuity + diffusion][artificial viscosity][corrected]
  */
 #define PAIR(name)                                                                                 \
   { name, name##_kgc }
 static PetscInt64 (*const sweeps[3][3][2][2])(const force_args *) = {
-    {{PAIR(sweep_lucy), PAIR(sweep_lucy_av)},
-     {PAIR(sweep_lucy_c), PAIR(sweep_lucy_c_av)},
-     {PAIR(sweep_lucy_cd), PAIR(sweep_lucy_cd_av)}},
-    {{PAIR(sweep_cubic), PAIR(sweep_cubic_av)},
-     {PAIR(sweep_cubic_c), PAIR(sweep_cubic_c_av)},
-     {PAIR(sweep_cubic_cd), PAIR(sweep_cubic_cd_av)}},
-    {{PAIR(sweep_wendland), PAIR(sweep_wendland_av)},
-     {PAIR(sweep_wendland_c), PAIR(sweep_wendland_c_av)},
-     {PAIR(sweep_wendland_cd), PAIR(sweep_wendland_cd_av)}},
+    SPH_SWEEP_ROW(PAIR, sweep_lucy),
+    SPH_SWEEP_ROW(PAIR, sweep_cubic),
+    SPH_SWEEP_ROW(PAIR, sweep_wendland),
 };
 
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,

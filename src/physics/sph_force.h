@@ -17,6 +17,22 @@ typedef struct {
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
 PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
                                  const double (*pair)[2]);
+/* The specialised sweeps of one kernel, one per (density form, artificial viscosity):
+ * X(name, kernel, continuity, artificial, diffusion); and a row of their dispatch table,
+ * [summation, continuity, continuity + diffusion][artificial viscosity], each entry P(name). */
+#define SPH_SWEEP_VARIANTS(X, stem, K)                                                             \
+  X(stem, K, 0, 0, 0)                                                                              \
+  X(stem##_c, K, 1, 0, 0)                                                                          \
+  X(stem##_av, K, 0, 1, 0)                                                                         \
+  X(stem##_c_av, K, 1, 1, 0)                                                                       \
+  X(stem##_cd, K, 1, 0, 1)                                                                         \
+  X(stem##_cd_av, K, 1, 1, 1)
+#define SPH_SWEEP_ROW(P, stem)                                                                     \
+  {                                                                                                \
+    {P(stem), P(stem##_av)}, {P(stem##_c), P(stem##_c_av)}, {                                      \
+      P(stem##_cd), P(stem##_cd_av)                                                                \
+    }                                                                                              \
+  }
 /* flops of one pair inside h (-log_view) */
 double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
 /* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the

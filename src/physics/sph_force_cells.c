@@ -259,29 +259,15 @@ SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int ar
   }
 /* each combination with v_est read apart from v_visc (walls) and as one (no walls) */
 #define CSWEEP(name, K, C, AV, D) CSWEEP1(name, K, C, AV, D, 0) CSWEEP1(name##_v, K, C, AV, D, 1)
-CSWEEP(csweep_lucy, SPH_KERNEL_LUCY, 0, 0, 0)
-CSWEEP(csweep_lucy_c, SPH_KERNEL_LUCY, 1, 0, 0)
-CSWEEP(csweep_lucy_av, SPH_KERNEL_LUCY, 0, 1, 0)
-CSWEEP(csweep_lucy_c_av, SPH_KERNEL_LUCY, 1, 1, 0)
-CSWEEP(csweep_lucy_cd, SPH_KERNEL_LUCY, 1, 0, 1)
-CSWEEP(csweep_lucy_cd_av, SPH_KERNEL_LUCY, 1, 1, 1)
-CSWEEP(csweep_wendland, SPH_KERNEL_WENDLAND, 0, 0, 0)
-CSWEEP(csweep_wendland_c, SPH_KERNEL_WENDLAND, 1, 0, 0)
-CSWEEP(csweep_wendland_av, SPH_KERNEL_WENDLAND, 0, 1, 0)
-CSWEEP(csweep_wendland_c_av, SPH_KERNEL_WENDLAND, 1, 1, 0)
-CSWEEP(csweep_wendland_cd, SPH_KERNEL_WENDLAND, 1, 0, 1)
-CSWEEP(csweep_wendland_cd_av, SPH_KERNEL_WENDLAND, 1, 1, 1)
+SPH_SWEEP_VARIANTS(CSWEEP, csweep_lucy, SPH_KERNEL_LUCY)
+SPH_SWEEP_VARIANTS(CSWEEP, csweep_wendland, SPH_KERNEL_WENDLAND)
 
 /* [Lucy, Wendland][summation, continuity, continuity + diffusion][artificial viscosity][same v] */
 #define CPAIR(name)                                                                                \
   { name, name##_v }
 static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *) = {
-    {{CPAIR(csweep_lucy), CPAIR(csweep_lucy_av)},
-     {CPAIR(csweep_lucy_c), CPAIR(csweep_lucy_c_av)},
-     {CPAIR(csweep_lucy_cd), CPAIR(csweep_lucy_cd_av)}},
-    {{CPAIR(csweep_wendland), CPAIR(csweep_wendland_av)},
-     {CPAIR(csweep_wendland_c), CPAIR(csweep_wendland_c_av)},
-     {CPAIR(csweep_wendland_cd), CPAIR(csweep_wendland_cd_av)}},
+    SPH_SWEEP_ROW(CPAIR, csweep_lucy),
+    SPH_SWEEP_ROW(CPAIR, csweep_wendland),
 };
 #endif
 
