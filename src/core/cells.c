@@ -22,7 +22,8 @@ PetscErrorCode cells_destroy(cells *c) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree3(c->start, c->order, c->cell_of));
   PetscCall(PetscFree2(c->pair_i, c->pair_j));
-  PetscCall(PetscFree2(c->xs, c->flag));
+  PetscCall(PetscFree(c->xs));
+  PetscCall(PetscFree(c->flag));
   PetscCall(PetscMemzero(c, sizeof(*c)));
   PetscFunctionReturn(0);
 }
@@ -106,16 +107,21 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
 
   /* positions and flags gathered in cell order: the search below then walks
    * contiguous memory instead of jumping through order[] */
-  if (n > c->n_alloc_sorted) {
-    PetscCall(PetscFree2(c->xs, c->flag));
+  if (n > c->n_alloc_sorted || (!c->no_pair_list && !c->xs)) {
+    PetscCall(PetscFree(c->xs));
+    PetscCall(PetscFree(c->flag));
     c->n_alloc_sorted = n + n / 4;
-    PetscCall(PetscMalloc2(c->n_alloc_sorted, &c->xs, c->n_alloc_sorted, &c->flag));
+    PetscCall(PetscMalloc1(c->n_alloc_sorted, &c->flag));
+    if (!c->no_pair_list) /* the positions in cell order serve only the pair search */
+      PetscCall(PetscMalloc1(c->n_alloc_sorted, &c->xs));
   }
   const PetscInt n_owned = ps->n_owned;
   for (PetscInt a = 0; a < n; a++) {
     const PetscInt i = c->order[a];
-    c->xs[a][0] = ps->x[i][0];
-    c->xs[a][1] = ps->x[i][1];
+    if (c->xs) {
+      c->xs[a][0] = ps->x[i][0];
+      c->xs[a][1] = ps->x[i][1];
+    }
     c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0) |
                  (ps->type[i] != PTYPE_FLUID ? 4 : 0);
   }

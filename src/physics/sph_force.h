@@ -41,7 +41,7 @@ double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, i
 #define SPH_CELLS_NFIELDS 13
 typedef struct sph_cells_work {
   PetscInt n_alloc;
-  double *block, *f[SPH_CELLS_NFIELDS];
+  double *f[SPH_CELLS_NFIELDS]; /* NULL where the run does not read the field */
   unsigned char *fl;
   PetscInt64 n_pairs; /* pairs inside h in the last sweep */
 } sph_cells_work;

@@ -53,24 +53,26 @@ PetscBool sph_force_cells_applies(const sim *s) {
 
 PetscErrorCode sph_cells_work_destroy(sph_cells_work *w) {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree(w->block));
+  for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
+    PetscCall(PetscFree(w->f[f]));
   PetscCall(PetscFree(w->fl));
   PetscCall(PetscMemzero(w, sizeof(*w)));
   PetscFunctionReturn(0);
 }
 
 #if SPH_CELLS_SIMD
-/* The cell-order copy: 8 padding entries after n so that a vector may read past the end. */
-static PetscErrorCode sph_cells_ensure(sph_cells_work *w, PetscInt n) {
+/* The cell-order copy of the fields in `need` (bit f: w->f[f]), with 8 padding entries after
+ * n so that a vector may read past the end; fields a run does not read are not allocated. */
+static PetscErrorCode sph_cells_ensure(sph_cells_work *w, PetscInt n, unsigned need) {
   PetscFunctionBeginUser;
   if (n + 8 > w->n_alloc) {
     PetscCall(sph_cells_work_destroy(w));
-    w->n_alloc = n + n / 4 + 8;
-    PetscCall(PetscCalloc1((size_t)SPH_CELLS_NFIELDS * (size_t)w->n_alloc, &w->block));
+    w->n_alloc = n + n / 16 + 8;
     PetscCall(PetscCalloc1(w->n_alloc, &w->fl));
-    for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
-      w->f[f] = w->block + (size_t)f * (size_t)w->n_alloc;
   }
+  for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
+    if ((need >> f & 1u) && !w->f[f])
+      PetscCall(PetscCalloc1(w->n_alloc, &w->f[f]));
   PetscFunctionReturn(0);
 }
 
@@ -111,7 +113,9 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
                             PetscInt last, own_sums *o) {
   const __m512d xa = _mm512_set1_pd(A->X[a]), ya = _mm512_set1_pd(A->Y[a]);
   const __m512d vxa = _mm512_set1_pd(A->VX[a]), vya = _mm512_set1_pd(A->VY[a]);
-  const __m512d exa = _mm512_set1_pd(A->EX[a]), eya = _mm512_set1_pd(A->EY[a]);
+  const int read_est = (artificial || continuity) && !same_v; /* else EX, EY may not exist */
+  const __m512d exa = read_est ? _mm512_set1_pd(A->EX[a]) : _mm512_setzero_pd();
+  const __m512d eya = read_est ? _mm512_set1_pd(A->EY[a]) : _mm512_setzero_pd();
   const __m512d Pa = _mm512_set1_pd(A->P[a]), IRa = _mm512_set1_pd(A->IR[a]);
   const __m512d Ma = _mm512_set1_pd(A->M[a]);
   const __m512d MIRa = _mm512_set1_pd(A->M[a] * A->IR[a]);
@@ -288,13 +292,20 @@ PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc
   const int continuity = sp->density == SPH_DENSITY_CONTINUITY;
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   const int diffusion = continuity && sp->delta > 0;
-  PetscCall(sph_cells_ensure(w, n));
+  const int need_est = (continuity || artificial) && !visc_is_est;
+  unsigned need = 0x1 | 0x2 | 0x4 | 0x8 | 0x40 | 0x80 | 0x100 | 0x400 | 0x800; /* always */
+  if (need_est)
+    need |= 0x10 | 0x20;
+  if (artificial || diffusion)
+    need |= 0x200;
+  if (continuity)
+    need |= 0x1000;
+  PetscCall(sph_cells_ensure(w, n, need));
   double *X = w->f[0], *Y = w->f[1], *VX = w->f[2], *VY = w->f[3];
   double *EX = visc_is_est ? VX : w->f[4], *EY = visc_is_est ? VY : w->f[5];
   double *P = w->f[6], *IR = w->f[7], *M = w->f[8], *RHO = w->f[9];
   double *AX = w->f[10], *AY = w->f[11], *DR = w->f[12];
   const PetscInt *restrict order = c->order;
-  const int need_est = (continuity || artificial) && !visc_is_est;
   /* one stream per loop: the rows are in cell order already (cells_sort.c), so each
    * loop reads nearly in order */
   for (PetscInt k = 0; k < n; k++)
