@@ -16,7 +16,6 @@ completed wave, or the end of the run, is drawn when none of them is).
 Exits non-zero, naming the file, when an input is missing, empty or not finite.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -26,6 +25,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+import intestine_common as ic  # noqa: E402
 
 
 def die(msg):
@@ -58,19 +59,7 @@ def read_series(path):
 
 
 def read_summary(path):
-    if not os.path.isfile(path):
-        die(f"{path}: no such file (the run did not finish?)")
-    with open(path) as f:
-        r = list(csv.reader(f))
-    if not r or r[0] != ["key", "value"] or len(r) < 2:
-        die(f"{path}: not a key,value table")
-    out = {}
-    for k, v in r[1:]:
-        out[k] = float("nan") if v == "n/a" else float(v)
-    for k in ("u_F", "V_w", "T_w", "b", "nu"):
-        if k not in out or not math.isfinite(out[k]):
-            die(f"{path}: {k} missing or undefined")
-    return out
+    return ic.read_summary(path, "plot_intestine.py", finite=("u_F", "V_w", "T_w", "b", "nu"))
 
 
 def pocket_counts(d, names, prefix, n_pockets):

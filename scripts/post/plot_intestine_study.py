@@ -35,6 +35,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+import intestine_common as ic  # noqa: E402
+
 PROG = "plot_intestine_study.py"
 # keys every summary must have; those in FINITE must also be numbers (not n/a)
 NEED = ("b", "level", "nu", "T_w", "V_w", "u_F", "alpha_T", "u_P", "u_S", "Ga", "Fr", "Lambda",
@@ -56,33 +58,7 @@ def warn(msg):
 
 def read_summary(path):
     """key -> float (n/a -> NaN); dies naming the file when missing or malformed."""
-    if not os.path.isfile(path):
-        die(f"{path}: no such file (the run did not finish?)")
-    with open(path, newline="") as f:
-        rows = [r for r in csv.reader(f) if r]
-    if len(rows) < 2 or [c.strip() for c in rows[0]] != ["key", "value"]:
-        die(f"{path}: not a key,value table")
-    out = {}
-    for n, r in enumerate(rows[1:], start=2):
-        if len(r) != 2:
-            die(f"{path}: line {n} has {len(r)} fields, not key,value")
-        k, v = r[0].strip(), r[1].strip()
-        if v == "n/a":
-            out[k] = math.nan
-            continue
-        try:
-            x = float(v)
-        except ValueError:
-            die(f"{path}: line {n}: {k} = '{v}' is neither a number nor n/a")
-        if not math.isfinite(x):
-            die(f"{path}: line {n}: {k} = '{v}' is not finite")
-        out[k] = x
-    missing = [k for k in NEED if k not in out]
-    if missing:
-        die(f"{path}: no {', '.join(missing)}")
-    undefined = [k for k in FINITE if math.isnan(out[k])]
-    if undefined:
-        die(f"{path}: {', '.join(undefined)} n/a")
+    out = ic.read_summary(path, PROG, NEED, FINITE)
     if out["nu"] <= 0 or out["b"] <= 0:
         die(f"{path}: nu and b must be > 0")
     return out
