@@ -54,4 +54,10 @@ PetscErrorCode bond_ensure_resolved(struct sim *s);
 /* Smallest mass among owned solid particles, over all ranks (+inf when none). */
 PetscErrorCode bond_min_solid_mass(struct sim *s, double *m);
 
+/* For scenes with solids: creates sim->topo, reads -bond_style (default: the scene's
+ * style) and -special_bonds_include, and enables the bond module of that style and
+ * angle_harmonic. Scene defaults for the bond/angle coefficients are set afterwards with
+ * bond_set_default / angle_set_default. */
+PetscErrorCode topology_enable(struct sim *s, bond_style style);
+
 #endif

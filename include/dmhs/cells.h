@@ -21,6 +21,9 @@ typedef struct cells {
   PetscInt n_pairs, n_alloc_pairs;
   PetscBool no_pair_list; /* every reader walks the cells: sort and flag only, list no pairs */
   PetscInt *pair_i, *pair_j;
+  /* Counts the builds: a sweep that needs only a subset of the pairs (walls, repulsion)
+   * keeps indices into the list, filtered once per build, valid while this matches. */
+  PetscInt64 generation;
   /* Bonded pairs to leave out (solids; NULL = none): tested only for
    * pairs of two non-fluid particles, so the liquid's pairs pay nothing. */
   const struct topology *excl;

@@ -5,7 +5,7 @@
  *                      scene, options, physics_options (every physics option's
  *                      value, "name value" lines: options_physics), n_ranks,
  *                      n_particles, step, t, dt,
- *                      next_output_t, next_progress_t, body_accel, snapshot_index
+ *                      next_output_t, next_progress_t, snapshot_index
  *   /particles/<field> every FIELD_CHECKPOINT field at its native width
  *   /particles/rank_counts  owned particles per rank when written
  *   /modules/<name>/   private state of modules with checkpoint hooks

@@ -12,7 +12,11 @@ enum {
   FIELD_GHOST = 1u << 1,      /* copied to ghosts at every ghost build */
   FIELD_CHECKPOINT = 1u << 2, /* saved in checkpoints (exact restart) */
   FIELD_OUTPUT = 1u << 3,     /* written to snapshots */
-  FIELD_OPTIONAL = 1u << 4    /* exists only when enabled (fields_enable) */
+  FIELD_OPTIONAL = 1u << 4,   /* exists only when enabled (fields_enable) */
+  /* changes only at a neighbour build, or with one forced (a type change: agglomeration
+   * sets force_rebuild; a parked particle moves past the skin): ghosts keep the copy of
+   * their build, and no refresh between builds sends it */
+  FIELD_FIXED = 1u << 5
 };
 
 typedef struct {

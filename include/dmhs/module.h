@@ -11,12 +11,18 @@ struct checkpoint_io;
 
 /* MODULE_NEEDS_PAIRS: neighbours within the module's reach (sets the cutoff of the cells);
  * MODULE_CELLS_ONLY, set by the module's setup: it walks the cells itself and reads no pair
- * list, so a run whose every pair module says so builds none (memory, time). */
+ * list, so a run whose every pair module says so builds none (memory, time).
+ * What a module asks the integrator to advance besides x and v, set by its options pass:
+ * MODULE_INTEGRATES_DENSITY: its compute adds density rates drho (continuity), and rho
+ * follows them; MODULE_PREDICTS_DENSITY: its forces want to see rho^n + dt drho^n,
+ * corrected to the trapezoid after them (integrate.c), not the half-step density. */
 enum {
   MODULE_NEEDS_PAIRS = 1u << 0,
   MODULE_NEEDS_BONDS = 1u << 1,
   MODULE_NEEDS_ANGLES = 1u << 2,
-  MODULE_CELLS_ONLY = 1u << 3
+  MODULE_CELLS_ONLY = 1u << 3,
+  MODULE_INTEGRATES_DENSITY = 1u << 4,
+  MODULE_PREDICTS_DENSITY = 1u << 5
 };
 
 typedef struct module module;
@@ -28,13 +34,27 @@ struct module {
    * solid sub-step, and its time-step limits bound the sub-step. */
   PetscBool solid_internal;
   double reach; /* longest interaction distance [m]; sets the ghost width */
+  /* NULL-terminated names of the ghost fields its sweeps read on ghost rows (beyond the
+   * FIELD_FIXED ones, which ghosts keep from their build): between builds a step refreshes
+   * the union of these, once, before the force evaluation. A field a module recomputes on
+   * ghost rows itself (SPH's p, v_visc) is not listed. NULL = reads no ghost row. */
+  const char *const *ghost_reads;
   PetscErrorCode (*set_from_options)(module *self, struct sim *s);
   PetscErrorCode (*setup)(module *self, struct sim *s);
-  /* One whole sweep: adds accelerations / density rates of owned particles. */
+  /* A force evaluation has two phases (sim_add_module_forces). Optional phase one,
+   * prepare: evaluates what other modules read during theirs at this evaluation's time
+   * (the body force's value, which the wall pass needs); runs for every module before any
+   * compute. Phase two, compute: one whole sweep that adds accelerations / density rates of
+   * owned particles, in the order the modules were enabled. */
+  PetscErrorCode (*prepare)(module *self, struct sim *s);
   PetscErrorCode (*compute)(module *self, struct sim *s);
   /* Appends this module's time-step limits. */
   PetscErrorCode (*max_dt)(module *self, struct sim *s, struct dt_limits *limits);
   PetscErrorCode (*view)(module *self, struct sim *s, PetscViewer viewer);
+  /* Optional: checks of its own beyond the time-step limits, one line each under the
+   * stability report; adds the number of problems found (each stops a run, or warns with
+   * -preflight warn). */
+  PetscErrorCode (*preflight)(module *self, struct sim *s, int *problems);
   PetscErrorCode (*destroy)(module *self);
   void *data;
   /* Optional: save / restore private state a restart needs (random-number

@@ -48,17 +48,18 @@ typedef struct sim {
   double list_cutoff; /* pair_cutoff + skin: the pair list's radius */
   PetscInt n_rebuilds;
   PetscBool force_rebuild; /* a module changed the structure (post_step): the next step rebuilds */
+  /* what a step refreshes on ghosts between builds: the union of the modules' ghost_reads,
+   * in field-table order (sim_collect_ghost_reads) */
+  const char *ghost_step_fields[32];
+  int n_ghost_step_fields;
   /* mpi: domain decomposition, migration check, debug and dump options */
   partition part;
   migrate_check mig;
   PetscBool debug_halo;                /* -debug_halo: pair list vs brute force, every rebuild */
   char dump_final[PETSC_MAX_PATH_LEN]; /* -dump_final <file> */
 
-  /* physics */
-  sph_params sph;
-  PetscBool sph_enabled;
-  double body_accel[DMHS_DIM]; /* body acceleration on fluid at the current time [m/s^2] */
-  topology *topo;              /* bonds and angles (solids); NULL in scenes without solids */
+  /* physics: each module owns its parameters (sph_params_get, body_force_get, ...) */
+  topology *topo; /* bonds and angles (solids); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
   scene *scn;
@@ -76,14 +77,17 @@ PetscErrorCode sim_run(sim *s);
 PetscErrorCode sim_destroy(sim **s);
 /* Called by scenes: adds a module (by registry name) and runs its options pass. */
 PetscErrorCode sim_enable_module(sim *s, const char *name, module **out);
+/* The enabled module of that registry name, or NULL. */
+module *sim_find_module(const sim *s, const char *name);
 /* Runs every enabled module's compute on the current positions: the force evaluation. */
 PetscErrorCode sim_compute_forces(sim *s);
 /* Which modules a force evaluation runs: those for which it is true. */
 typedef PetscBool (*module_filter)(const module *m);
 /* Zeroes a and drho of the owned and ghost rows, then sim_add_module_forces. */
 PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep);
-/* Runs the compute of every enabled module keep accepts (NULL: all), in the
- * order they were enabled; each adds to a and drho. */
+/* The two phases of a force evaluation over the enabled modules keep accepts (NULL: all):
+ * every prepare, then every compute, each in the order the modules were enabled; the
+ * computes add to a and drho. */
 PetscErrorCode sim_add_module_forces(sim *s, module_filter keep);
 /* Rebuilds ghosts and pairs for the current positions. */
 PetscErrorCode sim_rebuild_neighbours(sim *s);

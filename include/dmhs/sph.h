@@ -43,7 +43,12 @@ typedef struct sph_params {
   PetscBool density_predict;
 } sph_params;
 
-/* Registers the sph options into s->sph (defaults already there) and returns the module. */
 PetscErrorCode sph_module_create(module **m);
+struct sim;
+/* The sph module's parameters, for its scene to set defaults on before the options pass
+ * (NULL when m is not the sph module). */
+sph_params *sph_defaults(module *m);
+/* The enabled sph module's parameters (after the options pass), NULL without SPH. */
+const sph_params *sph_params_get(const struct sim *s);
 
 #endif

@@ -99,10 +99,4 @@ static inline PetscBool topology_excluded(const topology *t, const particles *ps
   return lo < t->ex_start[si + 1] && t->ex_gid[lo] == g ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* For scenes with solids: creates sim->topo, reads -bond_style and
- * -special_bonds_include, and enables the bond module of that style and
- * angle_harmonic. Scene defaults for the bond/angle coefficients are set
- * afterwards with bond_set_default / angle_set_default. */
-PetscErrorCode topology_enable(struct sim *s);
-
 #endif

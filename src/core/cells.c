@@ -127,6 +127,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
   }
 
   c->n_pairs = 0;
+  c->generation++;
   if (c->no_pair_list)
     PetscFunctionReturn(0);
   /* half stencil: each unordered pair of cells is visited once */

@@ -17,9 +17,9 @@
   { #member, w, k, offsetof(particles, member), fl, u }
 
 static const field_desc table[] = {
-    ROW(gid, 1, FIELD_INT64, ALL, "1"),
-    ROW(type, 1, FIELD_INT, ALL, "1"),
-    ROW(tag, 1, FIELD_INT, ALL, "1"),
+    ROW(gid, 1, FIELD_INT64, ALL | FIELD_FIXED, "1"),
+    ROW(type, 1, FIELD_INT, ALL | FIELD_FIXED, "1"),
+    ROW(tag, 1, FIELD_INT, ALL | FIELD_FIXED, "1"),
     ROW(x, DMHS_DIM, FIELD_REAL, ALL, "m"),
     ROW(v, DMHS_DIM, FIELD_REAL, ALL, "m/s"),
     /* v_est is derived (v + dt a) in the first half step: not checkpointed. */
@@ -32,14 +32,14 @@ static const field_desc table[] = {
     /* positions at the last neighbour build: decide the next rebuild, and let a
      * restart rebuild the very same ghosts and pairs (bitwise restart) */
     ROW(x_build, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT, "m"),
-    ROW(mass, 1, FIELD_REAL, ALL, "kg"),
+    ROW(mass, 1, FIELD_REAL, ALL | FIELD_FIXED, "kg"),
     ROW(rho, 1, FIELD_REAL, ALL, "kg/m^3"),
     ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "kg/m^3/s"),
     /* p is recomputed before use; checkpointed so a restarted state is complete */
     ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT, "Pa"),
     /* optional: which solid body a particle belongs to (0 = none / walls), so
      * that repulsion can keep two bodies (the vein's leaflets) apart */
-    ROW(body, 1, FIELD_INT, ALL | FIELD_OPTIONAL, "1"),
+    ROW(body, 1, FIELD_INT, ALL | FIELD_OPTIONAL | FIELD_FIXED, "1"),
     /* optional: per-particle stress diagnostics (src/diag/stress.c), derived at
      * output times from the current state, hence neither migrated nor saved */
     ROW(shear_rate, 1, FIELD_REAL, FIELD_OUTPUT | FIELD_OPTIONAL, "1/s"),

@@ -71,11 +71,21 @@ static inline void integrate_density_second(particles *ps, PetscInt i, double dt
     ps->rho[i] += 0.5 * dt * ps->drho[i];
 }
 
+/* What the enabled modules declare they integrate: density rates (continuity), and
+ * whether their forces see the predicted density. */
+static void integrate_density_mode(const sim *s, int *continuity, int *predict) {
+  unsigned needs = 0;
+  for (int m = 0; m < s->n_modules; m++)
+    needs |= s->modules[m]->needs;
+  *continuity = (needs & MODULE_INTEGRATES_DENSITY) != 0;
+  *predict = *continuity && (needs & MODULE_PREDICTS_DENSITY) != 0;
+}
+
 PetscErrorCode integrate_first_half(sim *s) {
   particles *ps = &s->ps;
   const double dt = s->dt, half = 0.5 * s->dt;
-  const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
-  const int predict = continuity && s->sph.density_predict;
+  int continuity, predict;
+  integrate_density_mode(s, &continuity, &predict);
   const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
@@ -108,8 +118,8 @@ PetscErrorCode integrate_first_half(sim *s) {
 PetscErrorCode integrate_second_half(sim *s) {
   particles *ps = &s->ps;
   const double half = 0.5 * s->dt;
-  const int continuity = s->sph_enabled && s->sph.density == SPH_DENSITY_CONTINUITY;
-  const int predict = continuity && s->sph.density_predict;
+  int continuity, predict;
+  integrate_density_mode(s, &continuity, &predict);
   /* sub-cycled solids: the second half kick of their last sub-step */
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
@@ -131,17 +141,6 @@ PetscErrorCode integrate_second_half(sim *s) {
   }
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
-}
-
-/* Lattice points (other than the origin) strictly inside the support at spacing dx. */
-static int neighbours_at_rest(double h, double dx) {
-  const int reach = (int)ceil(h / dx);
-  int n = 0;
-  for (int a = -reach; a <= reach; a++)
-    for (int b = -reach; b <= reach; b++)
-      if ((a || b) && sqrt((double)(a * a + b * b)) * dx < h)
-        n++;
-  return n;
 }
 
 PetscErrorCode integrate_stability_report(sim *s) {
@@ -167,15 +166,9 @@ PetscErrorCode integrate_stability_report(sim *s) {
                           s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
     problems += over;
   }
-  if (s->sph_enabled && s->dx > 0) {
-    const int nb = neighbours_at_rest(s->sph.h, s->dx);
-    const PetscBool few = nb < 12 ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscPrintf(
-        s->comm, "  %-18s h/dx = %.3g: %d neighbours inside the support at rest spacing%s\n",
-        "sph support", s->sph.h / s->dx, nb,
-        few ? "  TOO FEW (need >= 12 in 2D; h <= dx leaves none)" : ""));
-    problems += few;
-  }
+  for (int m = 0; m < s->n_modules; m++) /* the modules' own checks (e.g. SPH's support) */
+    if (s->modules[m]->preflight)
+      PetscCall(s->modules[m]->preflight(s->modules[m], s, &problems));
   if (problems) {
     const char *what =
         "dt exceeds a time-step limit or the kernel support holds too few neighbours "

@@ -141,6 +141,13 @@ PetscErrorCode sim_enable_module(sim *s, const char *name, module **out) {
   PetscFunctionReturn(0);
 }
 
+module *sim_find_module(const sim *s, const char *name) {
+  for (int m = 0; m < s->n_modules; m++)
+    if (!strcmp(s->modules[m]->name, name))
+      return s->modules[m];
+  return NULL;
+}
+
 PetscErrorCode sim_rebuild_neighbours(sim *s) {
   double lo[DMHS_DIM], hi[DMHS_DIM];
   PetscFunctionBeginUser;
@@ -170,7 +177,7 @@ PetscErrorCode sim_rebuild_neighbours(sim *s) {
   PetscFunctionReturn(0);
 }
 
-/* Names of every FIELD_GHOST field: what a ghost refresh between builds copies. */
+/* Names of every FIELD_GHOST field: what a full ghost refresh copies (diagnostics, restart). */
 static const char *const *sim_ghost_fields(int *n) {
   static const char *names[32];
   static int count = -1;
@@ -210,6 +217,37 @@ static PetscErrorCode sim_needs_rebuild(sim *s, PetscBool *rebuild) {
   PetscFunctionReturn(0);
 }
 
+/* The fields a step refreshes on ghosts between builds: those some module reads there
+ * (module.ghost_reads) and that can change between builds (not FIELD_FIXED). */
+static PetscErrorCode sim_collect_ghost_reads(sim *s) {
+  size_t nf;
+  const field_desc *t = fields_table(&nf);
+  PetscFunctionBeginUser;
+  s->n_ghost_step_fields = 0;
+  for (int m = 0; m < s->n_modules; m++)
+    for (const char *const *r = s->modules[m]->ghost_reads; r && *r; r++) {
+      const field_desc *f = fields_find(*r);
+      PetscCheck(f && (f->flags & FIELD_GHOST), s->comm, PETSC_ERR_PLIB,
+                 "module %s reads field '%s' on ghosts, which is not a ghost field of this run",
+                 s->modules[m]->name, *r);
+    }
+  for (size_t k = 0; k < nf; k++) {
+    if (!(t[k].flags & FIELD_GHOST) || (t[k].flags & FIELD_FIXED))
+      continue;
+    PetscBool read = PETSC_FALSE;
+    for (int m = 0; m < s->n_modules && !read; m++)
+      for (const char *const *r = s->modules[m]->ghost_reads; r && *r && !read; r++)
+        read = strcmp(*r, t[k].name) ? PETSC_FALSE : PETSC_TRUE;
+    if (!read)
+      continue;
+    PetscCheck(s->n_ghost_step_fields <
+                   (int)(sizeof(s->ghost_step_fields) / sizeof(s->ghost_step_fields[0])),
+               s->comm, PETSC_ERR_PLIB, "too many ghost fields");
+    s->ghost_step_fields[s->n_ghost_step_fields++] = t[k].name;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
   PetscBool rebuild = force;
   PetscFunctionBeginUser;
@@ -220,11 +258,8 @@ PetscErrorCode sim_update_neighbours(sim *s, PetscBool force) {
     PetscCall(sim_rebuild_neighbours(s));
     PetscCall(PetscArraycpy(s->ps.x_build, s->ps.x, s->ps.n_owned));
     s->n_rebuilds++;
-  } else {
-    int n;
-    const char *const *names = sim_ghost_fields(&n);
-    PetscCall(halo_forward(&s->hal, &s->ps, names, n));
-  }
+  } else if (s->n_ghost_step_fields > 0)
+    PetscCall(halo_forward(&s->hal, &s->ps, s->ghost_step_fields, s->n_ghost_step_fields));
   PetscFunctionReturn(0);
 }
 
@@ -256,6 +291,10 @@ PetscErrorCode sim_rebuild_as_last_built(sim *s) {
 
 PetscErrorCode sim_add_module_forces(sim *s, module_filter keep) {
   PetscFunctionBeginUser;
+  /* phase one: what the computes read from one another, at this evaluation's time */
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->prepare && (!keep || keep(s->modules[m])))
+      PetscCall(s->modules[m]->prepare(s->modules[m], s));
   for (int m = 0; m < s->n_modules; m++)
     if (!keep || keep(s->modules[m]))
       PetscCall(s->modules[m]->compute(s->modules[m], s));
@@ -373,6 +412,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   for (int m = 0; m < s->n_modules; m++)
     if ((s->modules[m]->needs & MODULE_NEEDS_PAIRS) && !(s->modules[m]->needs & MODULE_CELLS_ONLY))
       s->cel.no_pair_list = PETSC_FALSE;
+  PetscCall(sim_collect_ghost_reads(s));
 
   PetscCall(sim_view(s));
   PetscCall(integrate_stability_report(s));

@@ -510,20 +510,21 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
     vein_csv_real(b, sizeof(b), v->n_hist > 0, disp_std);
     vein_csv_real(c, sizeof(c), n_cycles > 0, peak_mean);
     vein_csv_real(d, sizeof(d), n_cycles > 0, peak_std);
-    int ok = fprintf(f,
-                     "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%."
-                     "6g\nnu,%.6g\nt_end,%.8g\n"
-                     "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_"
-                     "centre_peak,%.6g\n"
-                     "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT
-                     "\nrho_dev_max,%.6g\n"
-                     "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT
-                     "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
-                     "peak_stress_std,%s\nn_cycles,%" PetscInt_FMT "\n",
-                     v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, s->sph.nu, s->t,
-                     v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
-                     v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings, v->rho_dev_max,
-                     v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
+    int ok =
+        fprintf(f,
+                "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%."
+                "6g\nnu,%.6g\nt_end,%.8g\n"
+                "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_"
+                "centre_peak,%.6g\n"
+                "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT
+                "\nrho_dev_max,%.6g\n"
+                "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT
+                "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
+                "peak_stress_std,%s\nn_cycles,%" PetscInt_FMT "\n",
+                v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx,
+                sph_params_get(s)->nu, s->t, v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak,
+                v->u_centre_peak, v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings,
+                v->rho_dev_max, v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
     ok = (fclose(f) == 0) && ok;
     PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
     PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,

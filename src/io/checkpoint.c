@@ -7,8 +7,9 @@
  *     after the restart; v_est is derived from v and a in that kick, v_visc and
  *     ghosts are rebuilt before the next force sweep.
  *   - run control: step, t, dt (t = step * dt is recomputed identically),
- *     next output / progress times, the snapshot counter, and body_accel (the
- *     wall pass reads the body acceleration left by the previous sweep).
+ *     next output / progress times and the snapshot counter (nothing a force
+ *     evaluation reads from the previous one: the body force is evaluated
+ *     before the walls read it, in the same evaluation).
  *   - modules' and the scene's private state through their checkpoint hooks.
  * Reading validates before it changes anything it cannot restore: magic,
  * format version, scene, particle count, and each dataset's shape and type. */
@@ -274,7 +275,6 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_int64s(tmp, fid, "solid_substeps", &n_sub, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
-    PetscCall(h5io_put_reals(tmp, fid, "body_accel", s->body_accel, DMHS_DIM));
   }
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
@@ -459,7 +459,6 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   s->ts.n_sub = (PetscInt)n_sub;
   PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
   PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
-  PetscCall(h5io_get_reals(path, fid, "body_accel", s->body_accel, DMHS_DIM));
   PetscCheck(s->ts.step_anchor >= 0 && s->ts.step_anchor <= step, PETSC_COMM_SELF,
              PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")",

@@ -9,12 +9,13 @@ static double particle_steps_per_second(const sim *s, double seconds) {
 
 PetscErrorCode progress_print(sim *s) {
   const particles *ps = &s->ps;
+  const sph_params *sp = sph_params_get(s); /* NULL: no liquid (solids only) */
   double local[2] = {0, 0}, global[2];
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     local[0] = PetscMax(local[0], ps->v[i][0] * ps->v[i][0] + ps->v[i][1] * ps->v[i][1]);
-    if (ps->type[i] == PTYPE_FLUID && s->sph_enabled)
-      local[1] = PetscMax(local[1], PetscAbsReal(ps->rho[i] / s->sph.rho0 - 1.0));
+    if (ps->type[i] == PTYPE_FLUID && sp)
+      local[1] = PetscMax(local[1], PetscAbsReal(ps->rho[i] / sp->rho0 - 1.0));
   }
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, s->comm));
   PetscCall(partition_measure_imbalance(&s->part, s)); /* mpi: max/mean owned over ranks */

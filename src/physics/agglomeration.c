@@ -654,6 +654,8 @@ PetscErrorCode agglomeration_module_create(module **m) {
   d->max_bonds = 4;
   d->rng_seed = 1;
   (*m)->name = "agglomeration";
+  static const char *const reads[] = {"x", NULL}; /* ghost positions */
+  (*m)->ghost_reads = reads;
   (*m)->set_from_options = agglomeration_set_from_options;
   (*m)->setup = agglomeration_setup;
   (*m)->compute = agglomeration_compute;

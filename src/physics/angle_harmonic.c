@@ -221,6 +221,8 @@ PetscErrorCode angle_harmonic_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "angle_harmonic";
+  static const char *const reads[] = {"x", NULL}; /* ghost positions */
+  (*m)->ghost_reads = reads;
   (*m)->solid_internal = PETSC_TRUE;
   (*m)->needs = MODULE_NEEDS_ANGLES;
   (*m)->set_from_options = angle_set_from_options;

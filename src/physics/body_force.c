@@ -3,8 +3,10 @@
  *   a_body(t) = F                         (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)          (-body_force_period T > 0)
  * plus gravity (0, -g). -body_force_amplitude g0 is F = (g0, 0), the pulsatile
- * drive g0 sin(2 pi t/T) of the vein case (doc/cases.md). The current value is also left in
- * sim->body_accel, where the wall pass reads it for the hydrostatic part of wall pressure. */
+ * drive g0 sin(2 pi t/T) of the vein case (doc/cases.md). Its prepare phase evaluates the
+ * value at the force evaluation's time before any module computes, so that the wall pass
+ * (sph.c) reads the current value (body_force_current) for the hydrostatic part of the wall
+ * pressure. */
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
@@ -17,6 +19,7 @@ typedef struct {
   double gravity;                 /* [m/s^2], along -y */
   PetscBool on_type[PTYPE_COUNT]; /* which particle types feel it (walls never: their motion is
                                      prescribed) */
+  double current[DMHS_DIM];       /* a_body at the time of the last prepare [m/s^2] */
 } body_force_data;
 
 static const char *const body_force_type_names[PTYPE_COUNT] = {"fluid", "wall", "solid", "clot"};
@@ -39,6 +42,13 @@ PetscErrorCode body_force_get(module *m, double F[DMHS_DIM], double *period) {
       F[k] = d->F[k];
   if (period)
     *period = d->period;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode body_force_set_default_gravity(module *m, double g) {
+  body_force_data *d = m->data;
+  PetscFunctionBeginUser;
+  d->gravity = g;
   PetscFunctionReturn(0);
 }
 
@@ -107,7 +117,24 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
              "-body_force takes %d components Fx,Fy (got %d)", DMHS_DIM, (int)n);
   PetscCheck(d->period >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-body_force_period must be >= 0 (got %g)", d->period);
-  body_force_value(d, 0.0, s->body_accel);
+  body_force_value(d, 0.0, d->current);
+  PetscFunctionReturn(0);
+}
+
+void body_force_current(const module *m, double a[DMHS_DIM]) {
+  const body_force_data *d = m->data;
+  a[0] = d->current[0];
+  a[1] = d->current[1];
+}
+
+void body_force_at(const module *m, double t, double a[DMHS_DIM]) {
+  body_force_value(m->data, t, a);
+}
+
+static PetscErrorCode body_force_prepare(module *self, sim *s) {
+  body_force_data *d = self->data;
+  PetscFunctionBeginUser;
+  body_force_value(d, s->t, d->current);
   PetscFunctionReturn(0);
 }
 
@@ -116,8 +143,7 @@ static PetscErrorCode body_force_compute(module *self, sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.body_force, 0, 0, 0, 0));
-  body_force_value(d, s->t, s->body_accel);
-  const double ax = s->body_accel[0], ay = s->body_accel[1];
+  const double ax = d->current[0], ay = d->current[1];
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (!d->on_type[ps->type[i]])
       continue;
@@ -134,9 +160,10 @@ static PetscErrorCode body_force_max_dt(module *self, sim *s, dt_limits *l) {
   PetscFunctionBeginUser;
   const double amax = PetscSqrtReal(d->F[0] * d->F[0] + (PetscAbsReal(d->F[1]) + d->gravity) *
                                                             (PetscAbsReal(d->F[1]) + d->gravity));
-  if (amax > 0 && s->sph_enabled)
+  const sph_params *sp = sph_params_get(s);
+  if (amax > 0 && sp)
     PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2",
-                            0.25 * PetscSqrtReal(0.5 * s->sph.h / amax)));
+                            0.25 * PetscSqrtReal(0.5 * sp->h / amax)));
   PetscFunctionReturn(0);
 }
 
@@ -163,6 +190,7 @@ PetscErrorCode body_force_module_create(module **m) {
   PetscCall(PetscNew(m));
   (*m)->name = "body_force";
   (*m)->set_from_options = body_force_set_from_options;
+  (*m)->prepare = body_force_prepare;
   (*m)->compute = body_force_compute;
   (*m)->max_dt = body_force_max_dt;
   (*m)->view = body_force_view;

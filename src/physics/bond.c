@@ -104,3 +104,24 @@ PetscErrorCode bond_min_solid_mass(sim *s, double *m) {
   PetscCallMPI(MPI_Allreduce(&local, m, 1, MPI_DOUBLE, MPI_MIN, s->comm));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode topology_enable(sim *s, bond_style style) {
+  PetscFunctionBeginUser;
+  if (!s->topo)
+    PetscCall(topology_create(&s->topo));
+  PetscOptionsBegin(s->comm, NULL, "Solids: bonds, angles and exclusions", NULL);
+  PetscCall(PetscOptionsEnum(
+      "-bond_style",
+      "Bond potential: harmonic K (r-r0)^2 or nonlinear k_b (r-r0)^2/(r_max^2-(r-r0)^2)", NULL,
+      bond_style_names, (PetscEnum)style, (PetscEnum *)&style, NULL));
+  PetscCall(PetscOptionsBool(
+      "-special_bonds_include",
+      "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
+      "LAMMPS special_bonds lj/coul 0 0 1 angle yes)",
+      NULL, s->topo->special_include, &s->topo->special_include, NULL));
+  PetscOptionsEnd();
+  PetscCall(
+      sim_enable_module(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
+  PetscCall(sim_enable_module(s, "angle_harmonic", NULL));
+  PetscFunctionReturn(0);
+}

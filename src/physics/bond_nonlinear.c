@@ -212,6 +212,8 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "bond_nonlinear";
+  static const char *const reads[] = {"x", NULL}; /* ghost positions */
+  (*m)->ghost_reads = reads;
   (*m)->solid_internal = PETSC_TRUE;
   (*m)->needs = MODULE_NEEDS_BONDS;
   (*m)->set_from_options = bond_nonlinear_set_from_options;

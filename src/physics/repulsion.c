@@ -29,6 +29,10 @@ typedef struct {
   double r2_min;    /* closest approach of a repelling pair at the last compute [m^2] (inf: none) */
   double m_min[2];  /* lightest liquid and solid particle [kg] (masses never change) */
   PetscBool have_masses;
+  /* the pairs that can repel before the next build: indices into the pair list, in its
+   * order (the same sums), filtered at each build (repulsion_filter) */
+  PetscInt *sub, n_sub, n_alloc_sub;
+  PetscInt64 sub_generation;
 } repulsion_data;
 
 PetscErrorCode repulsion_set_bodies(module *m, PetscBool on) {
@@ -83,8 +87,9 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
 }
 
 typedef struct {
-  PetscInt n_pairs;
-  const PetscInt *restrict pi, *restrict pj, *restrict type, *restrict body;
+  PetscInt n_pairs;             /* entries of sub */
+  const PetscInt *restrict sub; /* indices into the pair list */
+  const PetscInt *restrict pi, *restrict pj;
   const double (*restrict x)[2];
   const double *restrict mass;
   double (*restrict a)[2];
@@ -104,19 +109,16 @@ repulsion_acts(int bodies, const PetscInt *type, const PetscInt *body, PetscInt 
 }
 
 /* Returns the smallest r^2 of a repelling pair (the stiffness there bounds dt). */
-static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int p2, int bodies,
+static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int p2,
                                                                     const repulsion_args *A) {
-  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj, *restrict type = A->type,
-                           *restrict body = A->body;
+  const PetscInt *restrict pi = A->pi, *restrict pj = A->pj;
   const double(*restrict x)[2] = A->x;
   const double *restrict mass = A->mass;
   double(*restrict a)[2] = A->a;
   const double K = A->K, rstar = A->rstar, rs2 = rstar * rstar;
   double r2_min = INFINITY;
-  for (PetscInt k = 0; k < A->n_pairs; k++) {
-    const PetscInt i = pi[k], j = pj[k];
-    if (!repulsion_acts(bodies, type, body, i, j))
-      continue;
+  for (PetscInt q = 0; q < A->n_pairs; q++) {
+    const PetscInt k = A->sub[q], i = pi[k], j = pj[k];
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r2 = d[0] * d[0] + d[1] * d[1];
     if (r2 >= rs2)
@@ -133,13 +135,35 @@ static inline __attribute__((always_inline)) double repulsion_sweep(int p1, int 
 }
 
 static double sweep_4_2(const repulsion_args *A) {
-  return repulsion_sweep(4, 2, 0, A);
+  return repulsion_sweep(4, 2, A);
 }
 static double sweep_12_6(const repulsion_args *A) {
-  return repulsion_sweep(12, 6, 0, A);
+  return repulsion_sweep(12, 6, A);
 }
-static double sweep_4_2_bodies(const repulsion_args *A) {
-  return repulsion_sweep(4, 2, 1, A);
+
+/* Once per build: the listed pairs that repel (types and bodies change only at a build) and
+ * lay within r* + skin. Between builds every particle moves less than half the skin (else a
+ * rebuild), so no other pair comes within r*. */
+static PetscErrorCode repulsion_filter(repulsion_data *d, sim *s) {
+  const particles *ps = &s->ps;
+  const double reach = d->rstar + s->skin, reach2 = reach * reach;
+  PetscFunctionBeginUser;
+  if (s->cel.n_pairs > d->n_alloc_sub) {
+    PetscCall(PetscFree(d->sub));
+    d->n_alloc_sub = s->cel.n_pairs + s->cel.n_pairs / 4;
+    PetscCall(PetscMalloc1(d->n_alloc_sub, &d->sub));
+  }
+  d->n_sub = 0;
+  for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
+    const PetscInt i = s->cel.pair_i[k], j = s->cel.pair_j[k];
+    if (!repulsion_acts(d->bodies, ps->type, ps->body, i, j))
+      continue;
+    const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
+    if (dx * dx + dy * dy < reach2)
+      d->sub[d->n_sub++] = k;
+  }
+  d->sub_generation = s->cel.generation;
+  PetscFunctionReturn(0);
 }
 
 static PetscErrorCode repulsion_compute(module *self, sim *s) {
@@ -147,28 +171,24 @@ static PetscErrorCode repulsion_compute(module *self, sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.repulsion, 0, 0, 0, 0));
-  const repulsion_args A = {.n_pairs = s->cel.n_pairs,
+  if (d->sub_generation != s->cel.generation)
+    PetscCall(repulsion_filter(d, s));
+  const repulsion_args A = {.n_pairs = d->n_sub,
+                            .sub = d->sub,
                             .pi = s->cel.pair_i,
                             .pj = s->cel.pair_j,
-                            .type = ps->type,
-                            .body = ps->body,
                             .x = (const double(*)[2])ps->x,
                             .mass = ps->mass,
                             .a = ps->a,
                             .K = d->K,
                             .rstar = d->rstar};
-  if (d->bodies) {
-    if (d->p1 == 4 && d->p2 == 2)
-      d->r2_min = sweep_4_2_bodies(&A);
-    else
-      d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 1, &A); /* generic: loop powers */
-  } else if (d->p1 == 4 && d->p2 == 2)
+  if (d->p1 == 4 && d->p2 == 2)
     d->r2_min = sweep_4_2(&A);
   else if (d->p1 == 12 && d->p2 == 6)
     d->r2_min = sweep_12_6(&A);
   else
-    d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, 0, &A); /* generic: loop powers */
-  PetscCall(PetscLogFlops(10.0 * (double)s->cel.n_pairs));
+    d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, &A); /* generic: loop powers */
+  PetscCall(PetscLogFlops(10.0 * (double)d->n_sub)); /* r^2 and its test; ~20 more inside r* */
   PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -266,7 +286,9 @@ static PetscErrorCode repulsion_view(module *self, sim *s, PetscViewer v) {
 }
 
 static PetscErrorCode repulsion_destroy(module *self) {
+  repulsion_data *d = self->data;
   PetscFunctionBeginUser;
+  PetscCall(PetscFree(d->sub));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -295,6 +317,8 @@ PetscErrorCode repulsion_module_create(module **m) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(m));
   (*m)->name = "repulsion";
+  static const char *const reads[] = {"x", NULL}; /* ghost positions */
+  (*m)->ghost_reads = reads;
   (*m)->needs = MODULE_NEEDS_PAIRS;
   (*m)->set_from_options = repulsion_set_from_options;
   (*m)->compute = repulsion_compute;
@@ -306,6 +330,7 @@ PetscErrorCode repulsion_module_create(module **m) {
   (*m)->checkpoint_write = repulsion_checkpoint_write;
   (*m)->checkpoint_read = repulsion_checkpoint_read;
   PetscCall(PetscNew((repulsion_data **)&(*m)->data));
+  ((repulsion_data *)(*m)->data)->sub_generation = -1; /* filtered at the first compute */
   /* the vein case's coupling (doc/cases.md) */
   PetscCall(repulsion_set_default(*m, 4e-4, 1e-4, 4, 2));
   PetscFunctionReturn(0);

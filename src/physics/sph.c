@@ -2,7 +2,10 @@
  * time-step limits and the echo of resolved parameters.
  *   per step: [summation density] -> EOS -> wall values -> [correction tensors]
  *             -> momentum (+ continuity) */
+#include <math.h>
+#include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/body_force.h"
 #include "dmhs/integrate.h"
 #include "sph_force.h"
 
@@ -17,14 +20,24 @@ const char *const sph_sweep_names[] = {"auto",           "pairs",      "cells",
                                        "sph_sweep_kind", "SPH_SWEEP_", NULL};
 
 typedef struct {
+  sph_params params; /* the scene's defaults, then the options (sph_defaults, sph_params_get) */
+  module *body;      /* the body force module, NULL without one: the walls' hydrostatic part */
   sph_wall_work *wall;
   sph_force_work force;
   sph_correction_work correction;
   PetscBool has_walls; /* any wall particle on any rank: else the wall pass is skipped */
 } sph_data;
 
+sph_params *sph_defaults(module *sph) {
+  return sph && !strcmp(sph->name, "sph") ? &((sph_data *)sph->data)->params : NULL;
+}
+
+const sph_params *sph_params_get(const sim *s) {
+  return sph_defaults(sim_find_module(s, "sph"));
+}
+
 static PetscErrorCode sph_set_from_options(module *self, sim *s) {
-  sph_params *sp = &s->sph;
+  sph_params *sp = &((sph_data *)self->data)->params;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "SPH liquid (module sph)", NULL);
   PetscCall(PetscOptionsEnum("-sph_kernel", "Kernel: lucy, cubic (B-spline), wendland (C2)", NULL,
@@ -105,17 +118,23 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCheck(sp->p_background >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_p_background must be >= 0 (got %g Pa)", sp->p_background);
   self->reach = sp->h;
-  s->sph_enabled = PETSC_TRUE;
+  /* the integrator advances rho with the rates this module adds (continuity) */
+  if (sp->density == SPH_DENSITY_CONTINUITY)
+    self->needs |= MODULE_INTEGRATES_DENSITY;
+  if (sp->density_predict)
+    self->needs |= MODULE_PREDICTS_DENSITY;
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode sph_setup(module *self, sim *s) {
   sph_data *d = self->data;
+  const sph_params *sp = &d->params;
   PetscInt n_local = particles_count_type(&s->ps, PTYPE_WALL), n_walls;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_walls, 1, MPIU_INT, MPI_SUM, s->comm));
   d->has_walls = n_walls > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(s->sph.wall != SPH_WALL_QUADRATIC || !d->has_walls || fields_enabled("to_surface"),
+  d->body = sim_find_module(s, "body_force");
+  PetscCheck(sp->wall != SPH_WALL_QUADRATIC || !d->has_walls || fields_enabled("to_surface"),
              s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_wall_extrapolation quadratic needs each wall particle's vector to the wall "
              "surface, which scene %s does not provide (the channel scenes do): use "
@@ -124,7 +143,7 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
   PetscCall(sph_wall_create(&d->wall));
   /* the vectorised sweep walks the cells; walls, summation density, the correction and the
    * stress diagnostics read the pair list */
-  if (sph_force_cells_applies(s) && !d->has_walls && s->sph.density == SPH_DENSITY_CONTINUITY &&
+  if (sph_force_cells_applies(sp) && !d->has_walls && sp->density == SPH_DENSITY_CONTINUITY &&
       !fields_enabled("stress_xx"))
     self->needs |= MODULE_CELLS_ONLY;
   PetscFunctionReturn(0);
@@ -132,33 +151,65 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
 
 static PetscErrorCode sph_compute(module *self, sim *s) {
   sph_data *d = self->data;
+  const sph_params *sp = &d->params;
   PetscFunctionBeginUser;
-  if (s->sph.density == SPH_DENSITY_SUMMATION)
-    PetscCall(sph_density_summation(s));
-  PetscCall(sph_eos_compute(s));
-  if (d->has_walls)
-    PetscCall(sph_wall_compute(s, d->wall));
-  else if (!(self->needs & MODULE_CELLS_ONLY)) /* else only the cells sweep reads it: v_est */
+  if (sp->density == SPH_DENSITY_SUMMATION)
+    PetscCall(sph_density_summation(s, sp));
+  PetscCall(sph_eos_compute(s, sp));
+  if (d->has_walls) {
+    /* the body force's value at this evaluation's time: its module's prepare phase ran
+     * before any compute (sim_add_module_forces) */
+    double g[DMHS_DIM] = {0.0, 0.0};
+    if (d->body)
+      body_force_current(d->body, g);
+    PetscCall(sph_wall_compute(s, sp, g, d->wall));
+  } else if (!(self->needs & MODULE_CELLS_ONLY)) /* else only the cells sweep reads it: v_est */
     PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
   d->force.visc_is_est = d->has_walls ? PETSC_FALSE : PETSC_TRUE;
-  if (s->sph.kernel_correction)
-    PetscCall(sph_correction_compute(s, &d->correction));
-  if (s->sph.kernel_correction)
-    PetscCall(sph_force_compute(s, &d->force, d->correction.corr,
+  if (sp->kernel_correction)
+    PetscCall(sph_correction_compute(s, sp, &d->correction));
+  if (sp->kernel_correction)
+    PetscCall(sph_force_compute(s, sp, &d->force, d->correction.corr,
                                 (const double(*)[2])d->correction.pair));
   else
-    PetscCall(sph_force_compute(s, &d->force, NULL, NULL));
+    PetscCall(sph_force_compute(s, sp, &d->force, NULL, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* Lattice points (other than the origin) strictly inside the support at spacing dx. */
+static int neighbours_at_rest(double h, double dx) {
+  const int reach = (int)ceil(h / dx);
+  int n = 0;
+  for (int a = -reach; a <= reach; a++)
+    for (int b = -reach; b <= reach; b++)
+      if ((a || b) && sqrt((double)(a * a + b * b)) * dx < h)
+        n++;
+  return n;
+}
+
+/* Pre-flight: enough neighbours inside the support at the scene's rest spacing. */
+static PetscErrorCode sph_preflight(module *self, sim *s, int *problems) {
+  const sph_params *sp = &((sph_data *)self->data)->params;
+  PetscFunctionBeginUser;
+  if (s->dx <= 0)
+    PetscFunctionReturn(0);
+  const int nb = neighbours_at_rest(sp->h, s->dx);
+  const PetscBool few = nb < 12 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscPrintf(s->comm,
+                        "  %-18s h/dx = %.3g: %d neighbours inside the support at rest spacing%s\n",
+                        "sph support", sp->h / s->dx, nb,
+                        few ? "  TOO FEW (need >= 12 in 2D; h <= dx leaves none)" : ""));
+  *problems += few;
   PetscFunctionReturn(0);
 }
 
 /* The classic limits were derived for a smoothing length h_s with support 2 h_s;
  * our h is the support, so they are evaluated with h_s = h/2. */
 static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
-  const sph_params *sp = &s->sph;
+  const sph_params *sp = &((sph_data *)self->data)->params;
   const double hs = 0.5 * sp->h;
   double local[2] = {0.0, 0.0}, global[2]; /* max|v|^2 (all), max|a|^2 (liquid) */
   PetscFunctionBeginUser;
-  (void)self;
   /* evaluated before every step: squares, one root each after the reduction */
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
     local[0] = PetscMax(local[0], s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
@@ -186,9 +237,8 @@ static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
 }
 
 static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
-  const sph_params *sp = &s->sph;
+  const sph_params *sp = &((sph_data *)self->data)->params;
   PetscFunctionBeginUser;
-  (void)self;
   PetscCall(PetscViewerASCIIPrintf(
       v, "sph: kernel %s, h = %g m (h/dx = %g), rho0 = %g kg/m^3, c0 = %g m/s, nu = %g m^2/s\n",
       sph_kernel_names[sp->kernel], sp->h, sp->h / s->dx, sp->rho0, sp->c0, sp->nu));
@@ -214,8 +264,7 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
 
 static PetscErrorCode sph_virial(module *self, sim *s, double (*W)[3]) {
   PetscFunctionBeginUser;
-  (void)self;
-  PetscCall(sph_stress_virial(s, W));
+  PetscCall(sph_stress_virial(s, &((sph_data *)self->data)->params, W));
   PetscFunctionReturn(0);
 }
 
@@ -237,6 +286,11 @@ PetscErrorCode sph_module_create(module **m) {
   PetscCall(PetscNew(m));
   (*m)->name = "sph";
   (*m)->needs = MODULE_NEEDS_PAIRS;
+  /* x for the pairs, v of the walls (correction's divergence, Adami's mirror), v_est for the
+   * viscous and continuity terms, rho for the EOS and 1/rho (p and v_visc are recomputed on
+   * ghosts: the EOS on every row, the wall pass forwards its own) */
+  static const char *const reads[] = {"x", "v", "v_est", "rho", NULL};
+  (*m)->ghost_reads = reads;
   (*m)->set_from_options = sph_set_from_options;
   (*m)->setup = sph_setup;
   (*m)->compute = sph_compute;
@@ -244,6 +298,7 @@ PetscErrorCode sph_module_create(module **m) {
   (*m)->view = sph_view;
   (*m)->destroy = sph_destroy;
   (*m)->virial = sph_virial;
+  (*m)->preflight = sph_preflight;
   PetscCall(PetscNew((sph_data **)&(*m)->data));
   PetscFunctionReturn(0);
 }

@@ -11,7 +11,7 @@
 #include "sph_correction_iact.h"
 #include "sph_force.h"
 
-SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, const double *restrict vol,
+SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, double h, const double *restrict vol,
                               const double (*restrict e)[2], sph_moments *restrict mom,
                               double (*restrict pair)[2]) {
   const particles *ps = &s->ps;
@@ -19,8 +19,7 @@ SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, const double *rest
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
   const double(*restrict v)[2] = (const double(*)[2])ps->v_visc;
   const PetscInt *restrict type = ps->type;
-  const double h2 = s->sph.h * s->sph.h, inv_h = 1.0 / s->sph.h,
-               norm = sph_kernel_norm(kernel, 2, s->sph.h);
+  const double h2 = h * h, inv_h = 1.0 / h, norm = sph_kernel_norm(kernel, 2, h);
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
     const PetscInt i = pi[k], j = pj[k];
     const double xij[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
@@ -55,14 +54,17 @@ SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, const double *rest
 
 typedef const double (*vel_rows)[2];
 typedef double (*pair_rows)[2];
-static void moments_lucy(sim *s, const double *V, vel_rows vd, sph_moments *m, pair_rows p) {
-  moments_sweep(SPH_KERNEL_LUCY, s, V, vd, m, p);
+static void moments_lucy(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
+                         pair_rows p) {
+  moments_sweep(SPH_KERNEL_LUCY, s, h, V, vd, m, p);
 }
-static void moments_cubic(sim *s, const double *V, vel_rows vd, sph_moments *m, pair_rows p) {
-  moments_sweep(SPH_KERNEL_CUBIC, s, V, vd, m, p);
+static void moments_cubic(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
+                          pair_rows p) {
+  moments_sweep(SPH_KERNEL_CUBIC, s, h, V, vd, m, p);
 }
-static void moments_wendland(sim *s, const double *V, vel_rows vd, sph_moments *m, pair_rows p) {
-  moments_sweep(SPH_KERNEL_WENDLAND, s, V, vd, m, p);
+static void moments_wendland(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
+                             pair_rows p) {
+  moments_sweep(SPH_KERNEL_WENDLAND, s, h, V, vd, m, p);
 }
 
 /* e = v_div - v_visc of a row: the divergence sees v_visc, but a wall's own
@@ -73,8 +75,8 @@ static void divergence_shift(const particles *ps, PetscInt i, double e[2]) {
   e[1] = wall ? ps->v[i][1] - ps->v_visc[i][1] : 0.0;
 }
 
-PetscErrorCode sph_correction_compute(sim *s, sph_correction_work *w) {
-  static void (*const sweeps[])(sim *, const double *, vel_rows, sph_moments *,
+PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, sph_correction_work *w) {
+  static void (*const sweeps[])(sim *, double, const double *, vel_rows, sph_moments *,
                                 pair_rows) = {moments_lucy, moments_cubic, moments_wendland};
   const particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
@@ -99,7 +101,7 @@ PetscErrorCode sph_correction_compute(sim *s, sph_correction_work *w) {
     w->vol[i] = i < ps->n_owned && ps->type[i] != PTYPE_WALL ? V : -V;
     divergence_shift(ps, i, w->e_div[i]);
   }
-  sweeps[s->sph.kernel](s, w->vol, (vel_rows)w->e_div, w->mom, w->pair);
+  sweeps[sp->kernel](s, sp->h, w->vol, (vel_rows)w->e_div, w->mom, w->pair);
   /* a sparse neighbourhood falls back to the plain operators (sph_correction_iact.h) */
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] != PTYPE_WALL)

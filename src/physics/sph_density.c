@@ -5,13 +5,13 @@
 #include "sph_kernel.h"
 #include "sph_force.h"
 
-SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
+SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double h, double norm) {
   particles *ps = &s->ps;
   const PetscInt *restrict pi = s->cel.pair_i, *restrict pj = s->cel.pair_j;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
   const double *restrict mass = ps->mass;
   double *restrict rho = ps->rho;
-  const double inv_h = 1.0 / s->sph.h;
+  const double inv_h = 1.0 / h;
   double w0, dw0;
   sph_kernel_eval(kernel, 2, norm, inv_h, 0.0, &w0, &dw0);
   for (PetscInt i = 0; i < ps->n_owned + ps->n_ghost; i++)
@@ -30,22 +30,23 @@ SPH_INLINE void density_sweep(sph_kernel_kind kernel, sim *s, double norm) {
   }
 }
 
-static void density_lucy(sim *s, double n) {
-  density_sweep(SPH_KERNEL_LUCY, s, n);
+static void density_lucy(sim *s, double h, double n) {
+  density_sweep(SPH_KERNEL_LUCY, s, h, n);
 }
-static void density_cubic(sim *s, double n) {
-  density_sweep(SPH_KERNEL_CUBIC, s, n);
+static void density_cubic(sim *s, double h, double n) {
+  density_sweep(SPH_KERNEL_CUBIC, s, h, n);
 }
-static void density_wendland(sim *s, double n) {
-  density_sweep(SPH_KERNEL_WENDLAND, s, n);
+static void density_wendland(sim *s, double h, double n) {
+  density_sweep(SPH_KERNEL_WENDLAND, s, h, n);
 }
 
-PetscErrorCode sph_density_summation(sim *s) {
+PetscErrorCode sph_density_summation(sim *s, const sph_params *sp) {
   static const char *const refreshed[] = {"rho"};
-  static void (*const sweeps[])(sim *, double) = {density_lucy, density_cubic, density_wendland};
+  static void (*const sweeps[])(sim *, double, double) = {density_lucy, density_cubic,
+                                                          density_wendland};
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_density, 0, 0, 0, 0));
-  sweeps[s->sph.kernel](s, sph_kernel_norm(s->sph.kernel, 2, s->sph.h));
+  sweeps[sp->kernel](s, sp->h, sph_kernel_norm(sp->kernel, 2, sp->h));
   PetscCall(PetscLogFlops(20.0 * (double)s->cel.n_pairs));
   PetscCall(PetscLogEventEnd(events.sph_density, 0, 0, 0, 0));
   /* a ghost only saw the pairs its rank owns: take its owner's full sum */

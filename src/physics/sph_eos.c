@@ -5,9 +5,8 @@
 #include "sph_eos.h"
 #include "sph_force.h"
 
-PetscErrorCode sph_eos_compute(sim *s) {
+PetscErrorCode sph_eos_compute(sim *s, const sph_params *sp) {
   particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_eos, 0, 0, 0, 0));

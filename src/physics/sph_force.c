@@ -147,26 +147,25 @@ static PetscInt64 (*const sweeps[3][3][2][2])(const force_args *) = {
     SPH_SWEEP_ROW(PAIR, sweep_wendland),
 };
 
-PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
-                                 const double (*pair)[2]) {
+PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *work,
+                                 const sph_correction *corr, const double (*pair)[2]) {
   particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
   const int continuity = sp->density == SPH_DENSITY_CONTINUITY;
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_force, 0, 0, 0, 0));
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscCheck(
-      sp->sweep != SPH_SWEEP_CELLS || (!corr && sph_force_cells_applies(s)), s->comm,
+      sp->sweep != SPH_SWEEP_CELLS || (!corr && sph_force_cells_applies(sp)), s->comm,
       PETSC_ERR_ARG_INCOMP, "-sph_force_sweep cells: %s",
       !sph_force_cells_available()
           ? "this build has no AVX-512 (configure with -DDMHS_NATIVE=ON on a machine that has it)"
           : "it needs no kernel correction and the Lucy or Wendland kernel; use "
             "-sph_force_sweep auto or pairs");
-  if (!corr && sph_force_cells_applies(s)) {
+  if (!corr && sph_force_cells_applies(sp)) {
     if (!work->cells)
       PetscCall(PetscNew(&work->cells));
-    PetscCall(sph_force_cells_compute(s, work->cells, work->visc_is_est));
+    PetscCall(sph_force_cells_compute(s, sp, work->cells, work->visc_is_est));
     PetscCall(PetscLogFlops(sph_force_flops_per_pair(continuity, artificial, sp->delta > 0, 0) *
                                 (double)work->cells->n_pairs +
                             6.0 * (double)n));

@@ -15,8 +15,8 @@ typedef struct {
 } sph_force_work;
 /* corr: the per-row tensors of -sph_kernel_correction and pair: the per-pair kernel
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
-PetscErrorCode sph_force_compute(sim *s, sph_force_work *work, const sph_correction *corr,
-                                 const double (*pair)[2]);
+PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *work,
+                                 const sph_correction *corr, const double (*pair)[2]);
 /* The specialised sweeps of one kernel, one per (density form, artificial viscosity):
  * X(name, kernel, continuity, artificial, diffusion); and a row of their dispatch table,
  * [summation, continuity, continuity + diffusion][artificial viscosity], each entry P(name). */
@@ -49,9 +49,10 @@ typedef struct sph_cells_work {
 PetscBool sph_force_cells_available(void);
 /* PETSC_TRUE when it applies to the current settings (-sph_force_sweep, uncorrected, Lucy or
  * Wendland); the choice depends on settings only, never on a rank's rows */
-PetscBool sph_force_cells_applies(const sim *s);
+PetscBool sph_force_cells_applies(const sph_params *sp);
 /* visc_is_est: v_visc equals v_est (no walls), read once */
-PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc_is_est);
+PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_work *w,
+                                       PetscBool visc_is_est);
 PetscErrorCode sph_cells_work_destroy(sph_cells_work *w);
 /* sph_correction.c: the tensors of the corrected operators for every row: owned
  * non-wall rows get L, G, B (the identity where the neighbourhood is too sparse),
@@ -65,18 +66,19 @@ typedef struct {
   PetscInt n_pair_alloc;
   double (*pair)[2]; /* per pair of the list: (dW/dr)/r and 1/r^2, 0 beyond h */
 } sph_correction_work;
-PetscErrorCode sph_correction_compute(sim *s, sph_correction_work *w);
+PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, sph_correction_work *w);
 PetscErrorCode sph_correction_destroy(sph_correction_work *w);
 /* sph_stress.c: the SPH virial, pressure force and shear rate (stress diagnostics) */
-PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]);
+PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, double (*W)[3]);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
-PetscErrorCode sph_density_summation(sim *s);
+PetscErrorCode sph_density_summation(sim *s, const sph_params *sp);
 /* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */
-PetscErrorCode sph_eos_compute(sim *s);
+PetscErrorCode sph_eos_compute(sim *s, const sph_params *sp);
 /* sph_wall.c: wall velocity/pressure/density extrapolated from the liquid (Adami 2012) */
 typedef struct sph_wall_work sph_wall_work;
 PetscErrorCode sph_wall_create(sph_wall_work **w);
 PetscErrorCode sph_wall_destroy(sph_wall_work **w);
-PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *w);
+/* g: the body acceleration at the current time (its hydrostatic part of the wall pressure) */
+PetscErrorCode sph_wall_compute(sim *s, const sph_params *sp, const double g[2], sph_wall_work *w);
 
 #endif

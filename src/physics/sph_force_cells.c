@@ -44,8 +44,7 @@ PetscBool sph_force_cells_available(void) {
   return SPH_CELLS_SIMD ? PETSC_TRUE : PETSC_FALSE;
 }
 
-PetscBool sph_force_cells_applies(const sim *s) {
-  const sph_params *sp = &s->sph;
+PetscBool sph_force_cells_applies(const sph_params *sp) {
   if (!SPH_CELLS_SIMD || sp->sweep == SPH_SWEEP_PAIRS)
     return PETSC_FALSE;
   return !sp->kernel_correction && sp->kernel != SPH_KERNEL_CUBIC ? PETSC_TRUE : PETSC_FALSE;
@@ -275,9 +274,9 @@ static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *
 };
 #endif
 
-PetscErrorCode sph_force_cells_compute(sim *s, sph_cells_work *w, PetscBool visc_is_est) {
+PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_work *w,
+                                       PetscBool visc_is_est) {
   particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
   const cells *c = &s->cel;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;

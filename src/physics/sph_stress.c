@@ -13,9 +13,8 @@
 #include "sph_force_iact.h"
 #include "sph_force.h"
 
-PetscErrorCode sph_stress_virial(sim *s, double (*W)[3]) {
+PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, double (*W)[3]) {
   particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h,
                norm = sph_kernel_norm(sp->kernel, 2, sp->h),

@@ -52,11 +52,17 @@ struct sph_wall_work {
   double (*sum_v_eta_zeta)[2]; /* sum_f W_wf v_f eta/zeta_f */
   double *sum_w_zeta;          /* sum_f W_wf zeta_f */
   double (*sum_tau)[3];        /* sum_f W_wf tau_f, tau_f^2, p_f tau_f (tau along the surface) */
+  PetscInt64 n_wall_pairs;     /* wall-liquid pairs inside h in the last pass (-log_view flops) */
+  /* the wall-liquid pairs of the list (one end a wall: types change only at a build),
+   * indices in its order, filtered once per build (wall_filter) */
+  PetscInt *sub, n_sub, n_alloc_sub;
+  PetscInt64 sub_generation;
 };
 
 PetscErrorCode sph_wall_create(sph_wall_work **w) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(w));
+  (*w)->sub_generation = -1; /* filtered at the first pass */
   PetscFunctionReturn(0);
 }
 
@@ -67,20 +73,20 @@ PetscErrorCode sph_wall_destroy(sph_wall_work **w) {
   PetscCall(PetscFree4((*w)->sum_w, (*w)->sum_v, (*w)->sum_p, (*w)->sum_rho_r));
   PetscCall(
       PetscFree4((*w)->sum_w_eta_zeta, (*w)->sum_v_eta_zeta, (*w)->sum_w_zeta, (*w)->sum_tau));
+  PetscCall(PetscFree((*w)->sub));
   PetscCall(PetscFree(*w));
   PetscFunctionReturn(0);
 }
 
-SPH_INLINE void wall_sums(sph_kernel_kind kernel, int quadratic, sim *s, sph_wall_work *W) {
+SPH_INLINE void wall_sums(sph_kernel_kind kernel, int quadratic, sim *s, const sph_params *sp,
+                          sph_wall_work *W) {
   const particles *ps = &s->ps;
-  const double norm = sph_kernel_norm(kernel, 2, s->sph.h), inv_h = 1.0 / s->sph.h;
+  const double norm = sph_kernel_norm(kernel, 2, sp->h), inv_h = 1.0 / sp->h;
   const PetscInt *restrict pi = s->cel.pair_i, *restrict pj = s->cel.pair_j;
-  for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
+  for (PetscInt q = 0; q < W->n_sub; q++) {
+    const PetscInt k = W->sub[q];
     PetscInt wl = pi[k], f = pj[k];
-    const int wi = ps->type[wl] == PTYPE_WALL, wj = ps->type[f] == PTYPE_WALL;
-    if (wi == wj)
-      continue; /* wall-wall pairs are not listed; liquid-liquid ones don't matter here */
-    if (wj) {
+    if (ps->type[f] == PTYPE_WALL) {
       wl = pj[k];
       f = pi[k];
     }
@@ -88,6 +94,7 @@ SPH_INLINE void wall_sums(sph_kernel_kind kernel, int quadratic, sim *s, sph_wal
     const double r2 = r_wf[0] * r_wf[0] + r_wf[1] * r_wf[1];
     if (r2 * inv_h * inv_h >= 1.0)
       continue; /* in the list's skin only */
+    W->n_wall_pairs++;
     double w, dwdr;
     sph_kernel_eval(kernel, 2, norm, inv_h, sqrt(r2), &w, &dwdr);
     W->sum_w[wl] += w;
@@ -116,30 +123,30 @@ SPH_INLINE void wall_sums(sph_kernel_kind kernel, int quadratic, sim *s, sph_wal
   }
 }
 
-static void wall_sums_lucy(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_LUCY, 0, s, W);
+static void wall_sums_lucy(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_LUCY, 0, s, sp, W);
 }
-static void wall_sums_cubic(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_CUBIC, 0, s, W);
+static void wall_sums_cubic(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_CUBIC, 0, s, sp, W);
 }
-static void wall_sums_wendland(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_WENDLAND, 0, s, W);
+static void wall_sums_wendland(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_WENDLAND, 0, s, sp, W);
 }
-static void wall_sums_lucy_q(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_LUCY, 1, s, W);
+static void wall_sums_lucy_q(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_LUCY, 1, s, sp, W);
 }
-static void wall_sums_cubic_q(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_CUBIC, 1, s, W);
+static void wall_sums_cubic_q(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_CUBIC, 1, s, sp, W);
 }
-static void wall_sums_wendland_q(sim *s, sph_wall_work *W) {
-  wall_sums(SPH_KERNEL_WENDLAND, 1, s, W);
+static void wall_sums_wendland_q(sim *s, const sph_params *sp, sph_wall_work *W) {
+  wall_sums(SPH_KERNEL_WENDLAND, 1, s, sp, W);
 }
 
 /* v_visc of wall i by the quadratic no-slip extrapolation (header comment);
  * false when i has no surface vector */
-static PetscBool wall_quadratic_velocity(const sim *s, const sph_wall_work *W, PetscInt i,
-                                         const double g[2], double v_visc[2]) {
-  const particles *ps = &s->ps;
+static PetscBool wall_quadratic_velocity(const particles *ps, const sph_params *sp,
+                                         const sph_wall_work *W, PetscInt i, const double g[2],
+                                         double v_visc[2]) {
   const double *sv = ps->to_surface[i];
   const double eta = sqrt(sv[0] * sv[0] + sv[1] * sv[1]);
   if (eta <= 0.0)
@@ -149,11 +156,10 @@ static PetscBool wall_quadratic_velocity(const sim *s, const sph_wall_work *W, P
   /* tangential pressure gradient: weighted least squares of p_f against tau_f */
   const double st = W->sum_tau[i][0], stt = W->sum_tau[i][1], spt = W->sum_tau[i][2];
   const double var = stt - st * st * inv;
-  const double dpdt =
-      var > 1e-6 * sw * s->sph.h * s->sph.h ? (spt - st * W->sum_p[i] * inv) / var : 0.0;
+  const double dpdt = var > 1e-6 * sw * sp->h * sp->h ? (spt - st * W->sum_p[i] * inv) / var : 0.0;
   /* rigid walls at constant velocity: a_w = 0 */
-  const double bal[2] = {dpdt * t[0] / s->sph.rho0 - g[0], dpdt * t[1] / s->sph.rho0 - g[1]};
-  const double bt = s->sph.nu > 0 ? 0.5 / s->sph.nu * (bal[0] * t[0] + bal[1] * t[1]) : 0.0;
+  const double bal[2] = {dpdt * t[0] / sp->rho0 - g[0], dpdt * t[1] / sp->rho0 - g[1]};
+  const double bt = sp->nu > 0 ? 0.5 / sp->nu * (bal[0] * t[0] + bal[1] * t[1]) : 0.0;
   const double beta[2] = {bt * t[0], bt * t[1]};
   const double zeta_mean = W->sum_w_zeta[i] * inv;
   for (int k = 0; k < 2; k++)
@@ -162,12 +168,30 @@ static PetscBool wall_quadratic_velocity(const sim *s, const sph_wall_work *W, P
   return PETSC_TRUE;
 }
 
-PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *W) {
+/* Once per build: the pairs with one wall end (wall-wall pairs are not listed;
+ * liquid-liquid ones don't matter here). */
+static PetscErrorCode wall_filter(sim *s, sph_wall_work *W) {
+  const PetscInt *type = s->ps.type;
+  PetscFunctionBeginUser;
+  if (s->cel.n_pairs > W->n_alloc_sub) {
+    PetscCall(PetscFree(W->sub));
+    W->n_alloc_sub = s->cel.n_pairs + s->cel.n_pairs / 4;
+    PetscCall(PetscMalloc1(W->n_alloc_sub, &W->sub));
+  }
+  W->n_sub = 0;
+  for (PetscInt k = 0; k < s->cel.n_pairs; k++)
+    if ((type[s->cel.pair_i[k]] == PTYPE_WALL) != (type[s->cel.pair_j[k]] == PTYPE_WALL))
+      W->sub[W->n_sub++] = k;
+  W->sub_generation = s->cel.generation;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sph_wall_compute(sim *s, const sph_params *sp, const double g[2], sph_wall_work *W) {
   static const char *const refreshed[] = {"v_visc", "p", "rho"};
-  static void (*const sums[2][3])(sim *, sph_wall_work *) = {
+  static void (*const sums[2][3])(sim *, const sph_params *, sph_wall_work *) = {
       {wall_sums_lucy, wall_sums_cubic, wall_sums_wendland},
       {wall_sums_lucy_q, wall_sums_cubic_q, wall_sums_wendland_q}};
-  const int quadratic = s->sph.wall == SPH_WALL_QUADRATIC;
+  const int quadratic = sp->wall == SPH_WALL_QUADRATIC;
   particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
@@ -190,7 +214,7 @@ PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *W) {
      * rest, and a floor at exactly that distance bit whenever the layer was
      * compressed by a hair (the quick channel then slipped by 7.7e-6 v_ref at
      * t = 4 s instead of 2.8e-7) */
-    W->zeta_min = 0.25 * (s->dx > 0 ? s->dx : s->sph.h / 3.0);
+    W->zeta_min = 0.25 * (s->dx > 0 ? s->dx : sp->h / 3.0);
   }
   PetscCall(PetscArrayzero(W->sum_w, n));
   PetscCall(PetscArrayzero(W->sum_v, n));
@@ -201,25 +225,29 @@ PetscErrorCode sph_wall_compute(sim *s, sph_wall_work *W) {
     ps->v_visc[i][0] = ps->v_est[i][0];
     ps->v_visc[i][1] = ps->v_est[i][1];
   }
-  sums[quadratic][s->sph.kernel](s, W);
-  const double g[2] = {s->body_accel[0], s->body_accel[1]};
+  if (W->sub_generation != s->cel.generation)
+    PetscCall(wall_filter(s, W));
+  W->n_wall_pairs = 0;
+  sums[quadratic][sp->kernel](s, sp, W);
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_WALL)
       continue;
     if (W->sum_w[i] <= 0.0) {
-      ps->rho[i] = s->sph.rho0;
-      ps->p[i] = sph_eos_pressure_bg(&s->sph, s->sph.rho0);
+      ps->rho[i] = sp->rho0;
+      ps->p[i] = sph_eos_pressure_bg(sp, sp->rho0);
       continue;
     }
     const double inv = 1.0 / W->sum_w[i];
-    if (!quadratic || !wall_quadratic_velocity(s, W, i, g, ps->v_visc[i])) {
+    if (!quadratic || !wall_quadratic_velocity(ps, sp, W, i, g, ps->v_visc[i])) {
       ps->v_visc[i][0] = 2.0 * ps->v[i][0] - W->sum_v[i][0] * inv;
       ps->v_visc[i][1] = 2.0 * ps->v[i][1] - W->sum_v[i][1] * inv;
     }
     ps->p[i] = (W->sum_p[i] + g[0] * W->sum_rho_r[i][0] + g[1] * W->sum_rho_r[i][1]) * inv;
-    ps->rho[i] = sph_eos_density_bg(&s->sph, ps->p[i]);
+    ps->rho[i] = sph_eos_density_bg(sp, ps->p[i]);
   }
-  PetscCall(PetscLogFlops(30.0 * (double)s->cel.n_pairs));
+  /* the kernel and the nine sums of a wall-liquid pair (the quadratic extrapolation's extra
+   * sums not counted); the other pairs of the list cost a type test each */
+  PetscCall(PetscLogFlops(30.0 * (double)W->n_wall_pairs));
   PetscCall(PetscLogEventEnd(events.sph_wall, 0, 0, 0, 0));
   PetscCall(halo_forward(&s->hal, ps, refreshed, 3));
   PetscFunctionReturn(0);

@@ -26,20 +26,23 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
              "-box_nx, -box_ny and -box_dx must be > 0");
   s->dx = b->dx;
   /* the vein case's liquid (doc/cases.md) */
-  s->sph.kernel = SPH_KERNEL_LUCY;
-  s->sph.h = 2.5 * b->dx;
-  s->sph.rho0 = 1056.0;
-  s->sph.c0 = 10.0;
-  s->sph.nu = 3.3e-6;
-  s->sph.eos = SPH_EOS_TAIT;
-  s->sph.density = SPH_DENSITY_CONTINUITY;
-  PetscCall(sim_enable_module(s, "sph", NULL));
+  module *sph;
+  PetscCall(sim_enable_module(s, "sph", &sph));
+  sph_params *sp = sph_defaults(sph);
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = 2.5 * b->dx;
+  sp->rho0 = 1056.0;
+  sp->c0 = 10.0;
+  sp->nu = 3.3e-6;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode box_build(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   box_data *b = self->data;
-  const double Lx = b->nx * b->dx, Ly = b->ny * b->dx, m = s->sph.rho0 * b->dx * b->dx;
+  const double Lx = b->nx * b->dx, Ly = b->ny * b->dx, m = sp->rho0 * b->dx * b->dx;
   PetscInt64 gid = 0;
   PetscFunctionBeginUser;
   s->dom.lo[0] = s->dom.lo[1] = 0;
@@ -53,7 +56,7 @@ static PetscErrorCode box_build(scene *self, sim *s) {
       const double kx = 2 * M_PI * x[0] / Lx, ky = 2 * M_PI * x[1] / Ly;
       const double v[DMHS_DIM] = {b->velocity * sin(kx) * cos(ky),
                                   -b->velocity * cos(kx) * sin(ky)};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, v, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, v, m, sp->rho0, NULL));
     }
   PetscFunctionReturn(0);
 }

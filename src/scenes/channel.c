@@ -76,19 +76,21 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
              dx_along, s->dx);
 
   /* the published channel setup; every value can be overridden with -sph_* */
-  s->sph.kernel = SPH_KERNEL_LUCY;
-  s->sph.h = 3.0 * s->dx;
-  s->sph.rho0 = 1000.0;
-  s->sph.c0 = 0.01;
-  s->sph.nu = 1e-6;
-  s->sph.eos = SPH_EOS_TAIT;
-  s->sph.density = SPH_DENSITY_CONTINUITY;
+  module *sph;
+  PetscCall(sim_enable_module(s, "sph", &sph));
+  sph_params *sp = sph_defaults(sph);
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = 3.0 * s->dx;
+  sp->rho0 = 1000.0;
+  sp->c0 = 0.01;
+  sp->nu = 1e-6;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
   /* steady flows run for seconds to minutes: plain SPH sums drift with the
    * sheared lattice's arrangement, and a second-order interior needs a
    * second-order wall (doc/theory.md, "Long-time accuracy") */
-  s->sph.kernel_correction = PETSC_TRUE;
-  s->sph.wall = SPH_WALL_QUADRATIC;
-  PetscCall(sim_enable_module(s, "sph", NULL));
+  sp->kernel_correction = PETSC_TRUE;
+  sp->wall = SPH_WALL_QUADRATIC;
   /* the walls' geometry (for -sph_wall_extrapolation quadratic; the module's
    * options are read after the scene's, so it is provided whatever they say) */
   PetscCall(fields_enable("to_surface"));
@@ -101,13 +103,13 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
 }
 
 static PetscErrorCode channel_build(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   channel_data *c = self->data;
-  const double dx = s->dx, m = s->sph.rho0 * dx * dx;
+  const double dx = s->dx, m = sp->rho0 * dx * dx;
   const double zero[DMHS_DIM] = {0, 0}, plate[DMHS_DIM] = {c->wall_speed, 0};
   PetscInt64 gid = 0;
   PetscFunctionBeginUser;
-  const PetscInt layers =
-      c->wall_layers > 0 ? c->wall_layers : (PetscInt)ceil(s->sph.h / dx - 1e-9);
+  const PetscInt layers = c->wall_layers > 0 ? c->wall_layers : (PetscInt)ceil(sp->h / dx - 1e-9);
   s->dom.lo[0] = 0;
   s->dom.hi[0] = c->length;
   s->dom.periodic[0] = PETSC_TRUE;
@@ -118,21 +120,21 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
   for (PetscInt j = 0; j < c->ny; j++)
     for (PetscInt i = 0; i < c->nx; i++) {
       const double x[DMHS_DIM] = {(i + 0.5) * dx, (j + 0.5) * dx};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, sp->rho0, NULL));
     }
   for (PetscInt k = 0; k < layers; k++)
     for (PetscInt i = 0; i < c->nx; i++) {
       const double below[DMHS_DIM] = {(i + 0.5) * dx, -(k + 0.5) * dx};
       const double above[DMHS_DIM] = {(i + 0.5) * dx, c->width + (k + 0.5) * dx};
       PetscInt lo, hi;
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, &lo));
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, plate, m, s->sph.rho0, &hi));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, sp->rho0, &lo));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, plate, m, sp->rho0, &hi));
       /* the surfaces are y = 0 and y = l */
       s->ps.to_surface[lo][0] = s->ps.to_surface[hi][0] = 0.0;
       s->ps.to_surface[lo][1] = (k + 0.5) * dx;
       s->ps.to_surface[hi][1] = -(k + 0.5) * dx;
     }
-  c->nu = s->sph.nu;
+  c->nu = sp->nu;
   if (c->flow == CHANNEL_POISEUILLE) {
     double F[DMHS_DIM], period;
     PetscCall(body_force_get(c->body, F, &period));
@@ -150,7 +152,7 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
       PetscCall(errors_setup(&c->err, s, exact_womersley, c,
                              analytic_womersley_amplitude(c->drive, c->omega, c->nu, c->width)));
     } else {
-      c->drive = s->body_accel[0];
+      c->drive = F[0];
       const double peak = c->drive * c->width * c->width / (8.0 * c->nu);
       PetscCall(errors_setup(&c->err, s, exact_poiseuille, c, peak));
     }

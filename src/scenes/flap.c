@@ -79,17 +79,19 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
    * tension below -B = -c0^2 rho0/7 (1.4 Pa at c0 = 0.1 m/s: a void opened
    * behind the tip and the density varied 20 %). c0 = 1 m/s gives B = 143 Pa,
    * density variations ~1 %, and costs nothing: dt is set by the bonds. */
-  s->sph.kernel = SPH_KERNEL_LUCY;
-  s->sph.h = 2.5 * f->dx;
-  s->sph.rho0 = 1000.0;
-  s->sph.c0 = 1.0;
-  s->sph.nu = 1e-4;
-  s->sph.eos = SPH_EOS_TAIT;
-  s->sph.density = SPH_DENSITY_CONTINUITY;
-  PetscCall(sim_enable_module(s, "sph", NULL));
+  module *sph;
+  PetscCall(sim_enable_module(s, "sph", &sph));
+  sph_params *sp = sph_defaults(sph);
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = 2.5 * f->dx;
+  sp->rho0 = 1000.0;
+  sp->c0 = 1.0;
+  sp->nu = 1e-4;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
   PetscCall(sim_enable_module(s, "body_force", &f->body));
   PetscCall(body_force_set_default(f->body, 0.5, 0.0));
-  PetscCall(topology_enable(s));
+  PetscCall(topology_enable(s, BOND_HARMONIC));
   /* a soft flap: EI = K dx^3 + 2 k_a dx (doc/theory.md) */
   PetscCall(bond_set_default(s, 2e3, f->dx, 0.5 * f->dx));
   PetscCall(angle_set_default(s, 1e-5, 90.0));
@@ -99,9 +101,10 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
 }
 
 static PetscErrorCode flap_build(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   flap_data *f = self->data;
-  const double dx = f->dx, m = s->sph.rho0 * dx * dx, zero[2] = {0, 0};
-  const PetscInt layers = (PetscInt)ceil(s->sph.h / dx - 1e-9);
+  const double dx = f->dx, m = sp->rho0 * dx * dx, zero[2] = {0, 0};
+  const PetscInt layers = (PetscInt)ceil(sp->h / dx - 1e-9);
   PetscInt64 gid = 0;
   PetscFunctionBeginUser;
   s->dom.lo[0] = 0;
@@ -116,7 +119,7 @@ static PetscErrorCode flap_build(scene *self, sim *s) {
       if ((i == f->flap_x || i == f->flap_x + 1) && j < f->flap_rows)
         continue;
       const double x[2] = {(i + 0.5) * dx, (j + 0.5) * dx};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, sp->rho0, NULL));
     }
   f->n_fluid = gid;
   /* walls; the flap's clamped row replaces the top lower-wall layer at its columns */
@@ -125,9 +128,8 @@ static PetscErrorCode flap_build(scene *self, sim *s) {
       const double below[2] = {(i + 0.5) * dx, -(k + 0.5) * dx},
                    above[2] = {(i + 0.5) * dx, (f->ny + k + 0.5) * dx};
       if (!(k == 0 && (i == f->flap_x || i == f->flap_x + 1)))
-        PetscCall(
-            particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, s->sph.rho0, NULL));
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, zero, m, s->sph.rho0, NULL));
+        PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, below, zero, m, sp->rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, above, zero, m, sp->rho0, NULL));
     }
   /* the flap: columns of the strip run up the channel, layer 0 upstream */
   bond_style style;
@@ -147,7 +149,7 @@ static PetscErrorCode flap_build(scene *self, sim *s) {
   f->st.across[1] = 0;
   f->st.spacing = dx;
   f->st.mass = f->solid_density_ratio * m;
-  f->st.rho = s->sph.rho0;
+  f->st.rho = sp->rho0;
   PetscCall(solid_strip_build(s, &f->st, &gid));
   PetscCall(PetscCalloc1(f->n_fluid, &f->side));
   PetscCall(PetscMalloc3(2 * f->st.n, &f->sx, 2 * f->st.n, &f->sv, 2 * f->st.n, &f->sx0));

@@ -117,38 +117,35 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
              "-intestine_red_pocket must lie in [1, N] (got %" PetscInt_FMT ")", c->red_pocket);
   s->dx = c->dx;
   /* the published case; h = 2.5 dx, not the published h = dx (no neighbour inside the support) */
-  s->sph.kernel = SPH_KERNEL_LUCY;
-  s->sph.h = 2.5 * c->dx;
-  s->sph.rho0 = 1000.0;
+  module *sph;
+  PetscCall(sim_enable_module(s, "sph", &sph));
+  sph_params *sp = sph_defaults(sph);
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = 2.5 * c->dx;
+  sp->rho0 = 1000.0;
   /* c0 = 5 m/s, not the published 1 m/s (doc/validation.md, "Intestine"):
    * at 1 m/s (B = 143 Pa) the hydrostatic pressure of the 7.6 mm deep pockets
    * alone compresses the liquid by 5.7 %, and the pouring liquid reaches
    * 0.2-0.4 m/s (Mach 0.2-0.4); 5 m/s keeps both within 1 % and 0.1 */
-  s->sph.c0 = 5.0;
-  s->sph.nu = 1e-5; /* inside the published 0.5e-6 ... 500e-6 m^2/s; quieter than water's 1e-6 */
+  sp->c0 = 5.0;
+  sp->nu = 1e-5; /* inside the published 0.5e-6 ... 500e-6 m^2/s; quieter than water's 1e-6 */
   /* density diffusion: without it the liquid at rest on the membrane is
    * unstable (continuity density at cell Reynolds number c0 h/nu ~ 600:
    * at c0 = 5 m/s Mach 0.5 after 0.05 s with no wave, at 1 m/s Mach 0.17
    * after 0.12 s); with delta = 0.1 it stays at Mach 0.004 (doc/theory.md) */
-  s->sph.delta = 0.1;
-  s->sph.eos = SPH_EOS_TAIT;
-  s->sph.density = SPH_DENSITY_CONTINUITY;
+  sp->delta = 0.1;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
   /* the automatic dt unless -dt is given: the repulsion's limit (0.035 dx
    * [s/m], 8.8e-6 s at dx = 2.5e-4 m) lies below the published 1e-5 s, and
    * the bonds' limit tightens as the membrane stretches under the wave */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
   if (!set)
     s->dt = 0.0;
-  PetscCall(sim_enable_module(s, "sph", NULL));
   PetscCall(sim_enable_module(s, "body_force", &c->body));
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-gravity", &set));
-  if (!set)
-    PetscCall(PetscOptionsSetValue(NULL, "-gravity", "9.81"));
+  PetscCall(body_force_set_default_gravity(c->body, 9.81));
   /* the published membrane is nonlinear (FENE-like) */
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-bond_style", &set));
-  if (!set)
-    PetscCall(PetscOptionsSetValue(NULL, "-bond_style", "nonlinear"));
-  PetscCall(topology_enable(s));
+  PetscCall(topology_enable(s, BOND_NONLINEAR));
   /* k_b = 1e-4 J, r0 = dx, r_max = 1.8 dx (4.5e-4 m at dx = 2.5e-4 m) */
   PetscCall(bond_set_default(s, 1e-4, c->dx, 1.8 * c->dx));
   PetscCall(angle_set_default(s, 8e-5, 90.0));
@@ -176,14 +173,16 @@ static inline double intestine_slope(const intestine_data *c, double x) {
 }
 
 static PetscErrorCode intestine_build(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   intestine_data *c = self->data;
-  const double dx = c->dx, m = s->sph.rho0 * dx * dx, zero[2] = {0, 0};
-  const PetscInt wl = (PetscInt)ceil(s->sph.h / dx - 1e-9); /* wall layers filling the support */
+  const double dx = c->dx, m = sp->rho0 * dx * dx, zero[2] = {0, 0};
+  const PetscInt wl = (PetscInt)ceil(sp->h / dx - 1e-9); /* wall layers filling the support */
   PetscInt64 gid = 0;
   PetscFunctionBeginUser;
   c->x_end = c->n_pockets * c->b;
-  double g = 0;
-  PetscCall(PetscOptionsGetReal(NULL, NULL, "-gravity", &g, NULL));
+  double a_body[DMHS_DIM]; /* the hydrostatic start's g: the body force's downward part */
+  body_force_at(c->body, 0.0, a_body);
+  const double g = -a_body[1];
   const double y_bottom = -c->amplitude - c->layers * dx; /* lowest membrane particle, about */
   const double y_top = c->level + c->wall_height;
   s->dom.lo[0] = -(wl + 2) * dx;
@@ -196,7 +195,7 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
    * left on the crest, its pressure extrapolated to the wall from itself
    * alone, rattled up to Mach 0.23 */
   c->x_park = c->x_end + 0.5 * dx;
-  c->lot_sp = 2.2 * s->sph.h;
+  c->lot_sp = 2.2 * sp->h;
   c->lot_x0 = c->x_park + 2 * c->lot_sp;
   c->lot_y0 = s->dom.lo[1] + c->lot_sp;
   c->lot_rows = (PetscInt)floor((s->dom.hi[1] - s->dom.lo[1] - 2 * c->lot_sp) / c->lot_sp);
@@ -213,10 +212,9 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
         continue;
       /* hydrostatic start, rho from p = rho0 g (L - y) through the Tait EOS: no collapse under
        * gravity */
-      const double B = s->sph.c0 * s->sph.c0 * s->sph.rho0 / 7.0,
-                   ph = s->sph.rho0 * g * (c->level - x[1]);
+      const double B = sp->c0 * sp->c0 * sp->rho0 / 7.0, ph = sp->rho0 * g * (c->level - x[1]);
       const double rho =
-          s->sph.eos == SPH_EOS_TAIT ? s->sph.rho0 * pow(1.0 + ph / B, 1.0 / 7.0) : s->sph.rho0;
+          sp->eos == SPH_EOS_TAIT ? sp->rho0 * pow(1.0 + ph / B, 1.0 / 7.0) : sp->rho0;
       PetscInt idx;
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, rho, &idx));
       const PetscInt k = tracking_pocket(x[0], c->n_pockets, c->b, 0.0);
@@ -234,11 +232,11 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
   for (PetscInt k = 0; k < wl; k++) {
     for (PetscInt j = jb; (j + 0.5) * dx < y_top; j++) {
       const double x[2] = {-(k + 0.5) * dx, (j + 0.5) * dx};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, x, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, x, zero, m, sp->rho0, NULL));
     }
     for (PetscInt j = jb; (j + 0.5) * dx < c->weir; j++) {
       const double x[2] = {c->x_end + (k + 0.5) * dx, (j + 0.5) * dx};
-      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, x, zero, m, s->sph.rho0, NULL));
+      PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_WALL, x, zero, m, sp->rho0, NULL));
     }
   }
   /* membrane: middle-line arc y_m(x) = y_s(x) - (layers-1)/2 dx, columns every dx of arc */
@@ -274,7 +272,7 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
       const double p[2] = {x + sh * n[0], ym + sh * n[1]};
       PetscInt idx;
       PetscCall(particles_add_owned(&s->ps, gid++, fixed ? PTYPE_WALL : PTYPE_SOLID, p, zero, m,
-                                    s->sph.rho0, &idx));
+                                    sp->rho0, &idx));
       if (!fixed)
         s->ps.tag[idx] = PERISTALSIS_TAG0 + (PetscInt)PetscMin(k, c->n_pockets - 1);
     }
@@ -318,6 +316,7 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
  * own slot of the lot, > 2 h from every other particle, so that it takes no
  * part in any sum. The slot is a function of the gid: rank-count invariant. */
 static PetscErrorCode intestine_park(intestine_data *c, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -331,7 +330,7 @@ static PetscErrorCode intestine_park(intestine_data *c, sim *s) {
     ps->x[i][1] = c->lot_y0 + (double)(g % c->lot_rows) * c->lot_sp;
     for (int d = 0; d < 2; d++)
       ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
-    ps->rho[i] = s->sph.rho0;
+    ps->rho[i] = sp->rho0;
     ps->drho[i] = 0;
   }
   PetscFunctionReturn(0);
@@ -511,6 +510,7 @@ static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const d
 }
 
 static PetscErrorCode intestine_finish(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   intestine_data *c = self->data;
   double tw, Tw, delay, uF;
   PetscInt64 fluid, parked;
@@ -533,7 +533,9 @@ static PetscErrorCode intestine_finish(scene *self, sim *s) {
       PetscCall(tracking_slope(c->hist_t + i0, c->hist_x + i0, n0, &uF0));
   }
   PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
-  const double nu = s->sph.nu, g = fabs(s->body_accel[1]);
+  double a_body[DMHS_DIM];
+  body_force_at(c->body, s->t, a_body);
+  const double nu = sp->nu, g = fabs(a_body[1]);
   const double Vw = c->n_pockets * c->b / Tw;
   const PetscBool reached = isnan(c->alpha_T) ? PETSC_FALSE : PETSC_TRUE;
   const double a = c->alpha_T;

@@ -193,18 +193,21 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   /* the thesis's blood (Lucy, h = 2.5 dx, c0 = 10 m/s, rho0 = 1056 kg/m^3, Tait,
    * continuity); its viscosity is not stated: blood's nu = 3.3e-6 m^2/s
    * (doc/validation.md, "Vein: peak inlet velocity", judges the choice) */
-  s->sph.kernel = SPH_KERNEL_LUCY;
-  s->sph.h = 2.5 * v->dx;
-  s->sph.rho0 = 1056.0;
-  s->sph.c0 = 10.0;
-  s->sph.nu = 3.3e-6;
-  s->sph.eos = SPH_EOS_TAIT;
-  s->sph.density = SPH_DENSITY_CONTINUITY;
+  module *sph;
+  PetscCall(sim_enable_module(s, "sph", &sph));
+  sph_params *sp = sph_defaults(sph);
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = 2.5 * v->dx;
+  sp->rho0 = 1056.0;
+  sp->c0 = 10.0;
+  sp->nu = 3.3e-6;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
   /* at this low viscosity (cell Reynolds number c0 h/nu ~ 10^3) the continuity
    * density keeps acoustic noise that grows until the run blows up (measured:
    * a plain channel at rest, dt = 0.47 of the sound-speed limit, at t ~ 0.08 s);
    * delta-SPH diffusion damps it without adding shear viscosity (doc/theory.md) */
-  s->sph.delta = 0.1;
+  sp->delta = 0.1;
   /* a liquid particle drawn into the gap between the sinus's curved wall and the
    * liquid (a lattice row that is neither: liquid keeps dx/2 from the surface,
    * walls 0.45 dx) keeps one or two liquid neighbours among eight walls: it
@@ -214,20 +217,19 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
    * |rho/rho0 - 1| 6.5 % at t = 0.17 s, a pressure pulse that moved the tips by
    * 5 % of their range); the density predicted for the end of the step does not
    * (doc/stability.md, "Vein") */
-  s->sph.density_predict = PETSC_TRUE;
+  sp->density_predict = PETSC_TRUE;
   /* behind the valve the jet's shear brings liquid particles together faster
    * than the blood's viscosity resolves at these spacings (pairs at 0.12 dx and
    * +-1e4 Pa spikes measured at dx = 5e-4 m); a weak Monaghan viscosity
    * (effective nu ~ alpha c0 h/8 = 3e-6 m^2/s at dx = 1e-4 m) stops it */
-  s->sph.av_alpha = 0.01;
+  sp->av_alpha = 0.01;
   PetscCall(fields_enable("body"));
   PetscCall(fields_enable("side"));
   PetscCall(stress_enable());
-  PetscCall(sim_enable_module(s, "sph", NULL));
   PetscCall(sim_enable_module(s, "body_force", &v->body));
   PetscCall(body_force_set_default(v->body, 0.1, 0.0));
   PetscCall(body_force_set_default_period(v->body, 4.0));
-  PetscCall(topology_enable(s));
+  PetscCall(topology_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, 1e6 / (r * r * r), v->dx, 0.5 * v->dx));
   PetscCall(angle_set_default(s, v->ka_ref / r, 90.0));
   PetscCall(sim_enable_module(s, "repulsion", &v->rep));
@@ -345,6 +347,7 @@ static PetscBool vein_near_strips(const solid_strip st[2], double x, double y, d
 }
 
 static PetscErrorCode vein_build(scene *self, sim *s) {
+  const sph_params *sp = sph_params_get(s);
   vein_data *v = self->data;
   const double dx = v->dx, r = dx / VEIN_DX_REF, zero[2] = {0, 0};
   const double m_fluid = v->fluid_mass_ref * r * r, m_solid = v->solid_mass_ref * r * r;
@@ -376,8 +379,8 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
   s->dom.lo[1] = -(ny + 2) * dx;
   s->dom.hi[1] = (ny + 2) * dx;
   s->dom.periodic[1] = PETSC_FALSE;
-  vein_leaflet_strip(v, x_root, theta, +1, m_solid, s->sph.rho0, &st[0]);
-  vein_leaflet_strip(v, x_root, theta, -1, m_solid, s->sph.rho0, &st[1]);
+  vein_leaflet_strip(v, x_root, theta, +1, m_solid, sp->rho0, &st[0]);
+  vein_leaflet_strip(v, x_root, theta, -1, m_solid, sp->rho0, &st[1]);
   PetscCall(vein_surface_build(v, xc, &sf));
 
   /* liquid first (gids 0 .. n_fluid - 1), then walls, then the leaflets */
@@ -405,7 +408,7 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
           continue;
         PetscInt idx;
         PetscCall(particles_add_owned(&s->ps, gid++, pass == 0 ? PTYPE_FLUID : PTYPE_WALL, x, zero,
-                                      pass == 0 ? m_fluid : m_solid, s->sph.rho0, &idx));
+                                      pass == 0 ? m_fluid : m_solid, sp->rho0, &idx));
         if (pass == 0 && x[0] > x_root && x[0] < xc + A) {
           /* between a leaflet's mid-plane (or the channel line past the tip) and the sinus wall */
           const double y_leaf =

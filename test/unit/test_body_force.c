@@ -2,15 +2,19 @@
  *   a_body(t) = F                  (-body_force_period 0)
  *   a_body(t) = F sin(2 pi t / T)  (-body_force_period T > 0)
  * plus gravity (0, -g), added to the acceleration of the particle types it
- * acts on (fluid by default; never walls) and left in sim->body_accel for the
- * wall pass. Proves, against values computed here by hand:
+ * acts on (fluid by default; never walls); its prepare phase leaves the value at
+ * the force evaluation's time for the wall pass (body_force_current). Proves,
+ * against values computed here by hand:
  *   - the constant drive with gravity on fluid only, added to what is there;
  *   - the pulsatile drive at quarter, half, three-quarter and an arbitrary
  *     phase; -body_force_amplitude g0 is F = (g0, 0);
  *   - -body_force_types fluid,solid,clot; walls are refused;
  *   - the option errors (F and amplitude together, a negative period, three
  *     components) and the scene defaults (body_force_set_default*, _get);
- *   - the time-step limit 0.25 sqrt(0.5 h / |a|max), |a|max = |(Fx, |Fy| + g)|. */
+ *   - the time-step limit 0.25 sqrt(0.5 h / |a|max), |a|max = |(Fx, |Fy| + g)|;
+ *   - the two phases of a force evaluation (sim_add_module_forces): a module
+ *     enabled before body_force reads, during its compute, the body force at
+ *     the evaluation's own time, not the previous evaluation's. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
@@ -18,21 +22,24 @@
 #include "dmhs/integrate.h"
 
 static sim s;
-static module *m;
+static module *m, *sph;
 
 static int setup(void **state) {
   (void)state;
   OK(PetscMemzero(&s, sizeof(s)));
   s.comm = PETSC_COMM_SELF;
-  s.sph_enabled = PETSC_TRUE;
-  s.sph.h = 4e-4;
   fields_reset();
+  OK(sph_module_create(&sph)); /* the time-step limit reads h */
+  sph_defaults(sph)->h = 4e-4;
   OK(particles_create(&s.ps));
   const double x[2] = {0, 0}, v[2] = {0, 0};
   /* one particle of each type, in type order */
   for (int t = 0; t < PTYPE_COUNT; t++)
     OK(particles_add_owned(&s.ps, t, (particle_type)t, x, v, 1.0, 1000.0, NULL));
   OK(body_force_module_create(&m));
+  s.modules[0] = sph;
+  s.modules[1] = m;
+  s.n_modules = 2;
   return 0;
 }
 
@@ -40,6 +47,8 @@ static int teardown(void **state) {
   (void)state;
   OK(m->destroy(m));
   OK(PetscFree(m));
+  OK(sph->destroy(sph));
+  OK(PetscFree(sph));
   OK(particles_destroy(&s.ps));
   OK(PetscOptionsClear(NULL));
   options_forget();
@@ -53,7 +62,15 @@ static void compute_at(double t) {
     s.ps.a[i][1] = 2.0;
   }
   s.t = t;
+  OK(m->prepare(m, &s));
   OK(m->compute(m, &s));
+}
+
+static void assert_current(double ax, double ay, double tol) {
+  double a[2];
+  body_force_current(m, a);
+  assert_close(a[0], ax, tol);
+  assert_close(a[1], ay, tol);
 }
 
 static void assert_accel(int type, double ax, double ay, double tol) {
@@ -65,16 +82,14 @@ static void test_constant_with_gravity(void **state) {
   (void)state;
   OK(PetscOptionsInsertString(NULL, "-body_force 0.3,-0.2 -gravity 9.81"));
   OK(m->set_from_options(m, &s));
-  /* the options pass already leaves the value at t = 0 for the wall pass */
-  assert_close(s.body_accel[0], 0.3, 0);
-  assert_close(s.body_accel[1], -0.2 - 9.81, 1e-15);
+  /* the options pass already leaves the value at t = 0 */
+  assert_current(0.3, -0.2 - 9.81, 1e-15);
   compute_at(0.7);
   assert_accel(PTYPE_FLUID, 1.3, 2.0 - 0.2 - 9.81, 1e-14);
   assert_accel(PTYPE_WALL, 1.0, 2.0, 0);
   assert_accel(PTYPE_SOLID, 1.0, 2.0, 0);
   assert_accel(PTYPE_CLOT, 1.0, 2.0, 0);
-  assert_close(s.body_accel[0], 0.3, 0);
-  assert_close(s.body_accel[1], -10.01, 1e-14);
+  assert_current(0.3, -10.01, 1e-14);
   double F[2], T = -1;
   OK(body_force_get(m, F, &T));
   assert_true(F[0] == 0.3 && F[1] == -0.2 && T == 0.0);
@@ -95,8 +110,10 @@ static void test_pulsatile(void **state) {
   for (size_t k = 0; k < sizeof(at) / sizeof(at[0]); k++) {
     compute_at(at[k].t);
     assert_accel(PTYPE_FLUID, 1.0 + at[k].ax, 2.0, 1e-14);
-    assert_close(s.body_accel[0], at[k].ax, 1e-14);
-    assert_close(s.body_accel[1], 0.0, 0);
+    assert_current(at[k].ax, 0.0, 1e-14);
+    double a[2];
+    body_force_at(m, at[k].t, a); /* the same value, evaluated at any time */
+    assert_close(a[0], at[k].ax, 1e-14);
     assert_accel(PTYPE_SOLID, 1.0, 2.0, 0);
   }
   double F[2], T;
@@ -175,6 +192,31 @@ static void test_max_dt(void **state) {
   assert_int_equal(none.n, 0);
 }
 
+/* A module enabled before body_force that reads body_force_current in its compute,
+ * as the wall pass does: what it saw, per evaluation. */
+static double seen_ax;
+static PetscErrorCode reader_compute(module *self, sim *sim_) {
+  double a[2];
+  (void)sim_;
+  body_force_current(self->data, a);
+  seen_ax = a[0];
+  return 0;
+}
+
+static void test_prepare_before_compute(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force_amplitude 2 -body_force_period 1"));
+  OK(m->set_from_options(m, &s));
+  module reader = {.name = "reader", .compute = reader_compute, .data = m};
+  s.modules[0] = &reader; /* before body_force, in the order of enabling */
+  for (int k = 1; k <= 3; k++) {
+    s.t = 0.25 * k; /* sin(pi k/2): 2, 0, -2 */
+    OK(sim_add_module_forces(&s, NULL));
+    assert_close(seen_ax, 2.0 * sin(0.5 * M_PI * k), 1e-14);
+  }
+  s.modules[0] = sph;
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(test_constant_with_gravity, setup, teardown),
@@ -184,6 +226,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_option_errors, setup, teardown),
       cmocka_unit_test_setup_teardown(test_scene_defaults, setup, teardown),
       cmocka_unit_test_setup_teardown(test_max_dt, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_prepare_before_compute, setup, teardown),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }

@@ -17,6 +17,7 @@
 #define G FIELD_GHOST
 #define C FIELD_CHECKPOINT
 #define O FIELD_OUTPUT
+#define F FIELD_FIXED
 
 typedef struct {
   const char *name;
@@ -29,11 +30,13 @@ typedef struct {
 /* The always-present rows. v_est is derived in the first half step (not
  * checkpointed, not written); v_visc is rebuilt by the wall pass before every
  * force sweep (ghosts only); p is recomputed before use, so it is not
- * migrated; x_build is internal (not written). */
+ * migrated; x_build is internal (not written); gid, type, tag, mass (and the
+ * optional body) change only at a neighbour build (F: ghosts keep their build's
+ * copy, no refresh between builds sends them). */
 static const expected_row base[] = {
-    {"gid", 1, FIELD_INT64, M | G | C | O, offsetof(particles, gid)},
-    {"type", 1, FIELD_INT, M | G | C | O, offsetof(particles, type)},
-    {"tag", 1, FIELD_INT, M | G | C | O, offsetof(particles, tag)},
+    {"gid", 1, FIELD_INT64, M | G | C | O | F, offsetof(particles, gid)},
+    {"type", 1, FIELD_INT, M | G | C | O | F, offsetof(particles, type)},
+    {"tag", 1, FIELD_INT, M | G | C | O | F, offsetof(particles, tag)},
     {"x", 2, FIELD_REAL, M | G | C | O, offsetof(particles, x)},
     {"v", 2, FIELD_REAL, M | G | C | O, offsetof(particles, v)},
     {"v_est", 2, FIELD_REAL, M | G, offsetof(particles, v_est)},
@@ -41,7 +44,7 @@ static const expected_row base[] = {
     {"a", 2, FIELD_REAL, M | C | O, offsetof(particles, a)},
     {"x0", 2, FIELD_REAL, M | C | O, offsetof(particles, x0)},
     {"x_build", 2, FIELD_REAL, M | C, offsetof(particles, x_build)},
-    {"mass", 1, FIELD_REAL, M | G | C | O, offsetof(particles, mass)},
+    {"mass", 1, FIELD_REAL, M | G | C | O | F, offsetof(particles, mass)},
     {"rho", 1, FIELD_REAL, M | G | C | O, offsetof(particles, rho)},
     {"drho", 1, FIELD_REAL, M | C | O, offsetof(particles, drho)},
     {"p", 1, FIELD_REAL, G | C | O, offsetof(particles, p)},
@@ -109,7 +112,7 @@ static void test_optional_rows(void **state) {
   /* in table order (body before a_hold), after the always-present rows */
   assert_string_equal(t[N_BASE].name, "body");
   assert_string_equal(t[N_BASE + 1].name, "a_hold");
-  assert_int_equal(t[N_BASE].flags, M | G | C | O | FIELD_OPTIONAL);
+  assert_int_equal(t[N_BASE].flags, M | G | C | O | F | FIELD_OPTIONAL);
   assert_int_equal(t[N_BASE].kind, FIELD_INT);
   assert_int_equal(t[N_BASE].offset, offsetof(particles, body));
   assert_int_equal(t[N_BASE + 1].flags, M | C | FIELD_OPTIONAL);

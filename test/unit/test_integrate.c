@@ -42,11 +42,16 @@ static void test_dt_limits(void **state) {
   assert_int_equal(l.n, DT_LIMITS_MAX);
 }
 
+/* What the liquid's module declares it integrates (continuity: density rates). */
+static module liquid;
+
 static void make_sim(sim *s, sph_density_kind density) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
-  s->sph_enabled = PETSC_TRUE;
-  s->sph.density = density;
+  liquid = (module){.name = "liquid",
+                    .needs = density == SPH_DENSITY_CONTINUITY ? MODULE_INTEGRATES_DENSITY : 0};
+  s->modules[0] = &liquid;
+  s->n_modules = 1;
   s->dt = 1e-3;
   OK(particles_create(&s->ps));
 }
@@ -104,7 +109,7 @@ static void test_density_predict_trapezoid(void **state) {
   fields_reset();
   OK(fields_enable("drho_prev"));
   make_sim(&s, SPH_DENSITY_CONTINUITY);
-  s.sph.density_predict = PETSC_TRUE;
+  liquid.needs |= MODULE_PREDICTS_DENSITY;
   const double x0[2] = {0, 0}, v0[2] = {0, 0};
   OK(particles_add_owned(&s.ps, 1, PTYPE_FLUID, x0, v0, 1.0, 1000.0, NULL));
   s.ps.drho[0] = 12.0;
@@ -130,7 +135,8 @@ static void ring(PetscBool predict, double omega, double dt, int steps, double *
   if (predict)
     OK(fields_enable("drho_prev"));
   make_sim(&s, SPH_DENSITY_CONTINUITY);
-  s.sph.density_predict = predict;
+  if (predict)
+    liquid.needs |= MODULE_PREDICTS_DENSITY;
   s.dt = dt;
   OK(particles_add_owned(&s.ps, 1, PTYPE_FLUID, x0, v0, 1.0, rho0 + 1e-3, NULL));
   s.ps.a[0][0] = -beta * 1e-3;

@@ -23,6 +23,8 @@
 #include "physics/sph_correction_iact.h"
 
 static const double h = 0.1, rho0 = 1000.0, c0 = 10.0, nu = 1e-3;
+/* the liquid's parameters (the sph module's, passed to its passes as it does) */
+static sph_params sph_p;
 
 typedef struct {
   double rij[2], r, dwdr, rho_i, rho_j, p_i, p_j, v_i[2], v_j[2];
@@ -135,16 +137,15 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
                         sph_density_kind density, unit_rng *g) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
-  s->sph = (sph_params){.kernel = kernel,
-                        .h = h,
-                        .rho0 = rho0,
-                        .c0 = c0,
-                        .nu = nu,
-                        .eos = SPH_EOS_TAIT,
-                        .density = density,
-                        .av_alpha = alpha,
-                        .av_beta = 2.0 * alpha};
-  s->sph_enabled = PETSC_TRUE;
+  sph_p = (sph_params){.kernel = kernel,
+                       .h = h,
+                       .rho0 = rho0,
+                       .c0 = c0,
+                       .nu = nu,
+                       .eos = SPH_EOS_TAIT,
+                       .density = density,
+                       .av_alpha = alpha,
+                       .av_beta = 2.0 * alpha};
   s->dom = (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
   s->pair_cutoff = h;
   OK(particles_create(&s->ps));
@@ -184,7 +185,7 @@ static void destroy_cloud(sim *s) {
  * other owned particles with the minimum-image separation. */
 static void brute_force(const sim *s, PetscInt i, double a[2], double *drho) {
   const particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
+  const sph_params *sp = &sph_p;
   const double norm = sph_kernel_norm(sp->kernel, 2, h);
   a[0] = a[1] = *drho = 0.0;
   for (PetscInt j = 0; j < ps->n_owned; j++) {
@@ -227,7 +228,7 @@ static void test_sweep_conserves_momentum(void **state) {
         const sph_density_kind density = cont ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION;
         build_cloud(&s, 150, kernels[k], av ? 0.5 : 0.0, density, &g);
         assert_true(s.ps.n_ghost > 0 && s.cel.n_pairs > 150);
-        OK(sph_force_compute(&s, &work, NULL, NULL));
+        OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
         double P[2] = {0, 0}, scale = 0, amax = 0, dmax = 0;
         for (PetscInt i = 0; i < s.ps.n_owned; i++)
           for (int d = 0; d < 2; d++) {
@@ -268,9 +269,9 @@ static void test_coincident_pair(void **state) {
   cloud_coincident = 1;
   build_cloud(&s, 60, SPH_KERNEL_LUCY, 0.0, SPH_DENSITY_CONTINUITY, &g);
   cloud_coincident = 0;
-  s.sph.delta = 0.1;
+  sph_p.delta = 0.1;
   assert_true(s.ps.x[0][0] == s.ps.x[1][0] && s.ps.x[0][1] == s.ps.x[1][1]);
-  OK(sph_force_compute(&s, &work, NULL, NULL));
+  OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
   double P[2] = {0, 0}, scale = 0;
   for (PetscInt i = 0; i < s.ps.n_owned; i++) {
     assert_true(isfinite(s.ps.a[i][0]) && isfinite(s.ps.a[i][1]) && isfinite(s.ps.drho[i]));
@@ -282,17 +283,17 @@ static void test_coincident_pair(void **state) {
   assert_true(fabs(P[0]) <= 1e-12 * scale && fabs(P[1]) <= 1e-12 * scale);
   /* particle 0 against the same sum without its twin, plus the limit term */
   double a_all[2], drho;
-  s.sph.delta = 0.0;
+  sph_p.delta = 0.0;
   OK(PetscArrayzero(s.ps.a, s.ps.n_owned + s.ps.n_ghost));
   OK(PetscArrayzero(s.ps.drho, s.ps.n_owned + s.ps.n_ghost));
-  OK(sph_force_compute(&s, &work, NULL, NULL));
+  OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
   a_all[0] = s.ps.a[0][0];
   a_all[1] = s.ps.a[0][1];
   const double mass1 = s.ps.mass[1];
   s.ps.mass[1] = 0.0; /* the twin's contributions to particle 0 vanish */
   OK(PetscArrayzero(s.ps.a, s.ps.n_owned + s.ps.n_ghost));
   OK(PetscArrayzero(s.ps.drho, s.ps.n_owned + s.ps.n_ghost));
-  OK(sph_force_compute(&s, &work, NULL, NULL));
+  OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
   (void)drho;
   const double F0 = -12.0 * sph_kernel_norm(SPH_KERNEL_LUCY, 2, h) / (h * h);
   const double mu_sum = 2.0 * rho0 * nu;
@@ -313,7 +314,7 @@ static void test_summation_density(void **state) {
   static sim s;
   for (int k = 0; k < 3; k++) {
     build_cloud(&s, 150, kernels[k], 0.0, SPH_DENSITY_SUMMATION, &g);
-    OK(sph_density_summation(&s));
+    OK(sph_density_summation(&s, &sph_p));
     const particles *ps = &s.ps;
     const double norm = sph_kernel_norm(kernels[k], 2, h);
     for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -342,7 +343,7 @@ typedef struct {
 
 static int neighbours_of(const sim *s, PetscInt i, nb_entry *nb, int max) {
   const particles *ps = &s->ps;
-  const double norm = sph_kernel_norm(s->sph.kernel, 2, h);
+  const double norm = sph_kernel_norm(sph_p.kernel, 2, h);
   int n = 0;
   for (PetscInt j = 0; j < ps->n_owned; j++) {
     if (j == i)
@@ -353,7 +354,7 @@ static int neighbours_of(const sim *s, PetscInt i, nb_entry *nb, int max) {
     if (e.r >= h)
       continue;
     double w = 0;
-    sph_kernel_eval(s->sph.kernel, 2, norm, 1.0 / h, e.r, &w, &e.dwdr);
+    sph_kernel_eval(sph_p.kernel, 2, norm, 1.0 / h, e.r, &w, &e.dwdr);
     const double r2 = e.rij[0] * e.rij[0] + e.rij[1] * e.rij[1];
     e.inv_r2 = 1.0 / r2;
     e.F = e.dwdr * (sqrt(r2) * e.inv_r2);
@@ -366,7 +367,7 @@ static int neighbours_of(const sim *s, PetscInt i, nb_entry *nb, int max) {
 /* The corrected operators of owned particle i by direct summation. */
 static void brute_force_corrected(const sim *s, PetscInt i, double a[2], double *drho) {
   const particles *ps = &s->ps;
-  const sph_params *sp = &s->sph;
+  const sph_params *sp = &sph_p;
   static nb_entry nb[256];
   const int n = neighbours_of(s, i, nb, 256);
   sph_moments m = {0};
@@ -409,9 +410,9 @@ static void test_corrected_sweep(void **state) {
       build_cloud(&s, 150, kernels[k], av ? 0.5 : 0.0, SPH_DENSITY_CONTINUITY, &g);
       /* the continuity velocity is v_est, the viscous one v_visc: make them one (liquid) */
       OK(PetscArraycpy(s.ps.v_visc, s.ps.v_est, s.ps.n_owned + s.ps.n_ghost));
-      s.sph.kernel_correction = PETSC_TRUE;
-      OK(sph_correction_compute(&s, &cw));
-      OK(sph_force_compute(&s, &work, cw.corr, (const double(*)[2])cw.pair));
+      sph_p.kernel_correction = PETSC_TRUE;
+      OK(sph_correction_compute(&s, &sph_p, &cw));
+      OK(sph_force_compute(&s, &sph_p, &work, cw.corr, (const double(*)[2])cw.pair));
       double amax = 0, dmax = 0;
       for (PetscInt i = 0; i < s.ps.n_owned; i++) {
         amax = fmax(amax, fmax(fabs(s.ps.a[i][0]), fabs(s.ps.a[i][1])));
@@ -451,20 +452,20 @@ static void test_cells_sweep_bitwise(void **state) {
           build_cloud(&s, 400, kernels[k], av ? 0.5 : 0.0,
                       dens ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION, &g);
           cloud_walls = 0;
-          s.sph.delta = dens == 2 ? 0.1 : 0.0;
+          sph_p.delta = dens == 2 ? 0.1 : 0.0;
           if (walls)
             s.ps.type[5] = PTYPE_WALL;
           const PetscInt rows = s.ps.n_owned + s.ps.n_ghost;
           double(*a_pairs)[2], *d_pairs;
           OK(PetscMalloc2(rows, &a_pairs, rows, &d_pairs));
-          s.sph.sweep = SPH_SWEEP_PAIRS;
-          OK(sph_force_compute(&s, &work, NULL, NULL));
+          sph_p.sweep = SPH_SWEEP_PAIRS;
+          OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
           OK(PetscArraycpy(a_pairs, s.ps.a, rows));
           OK(PetscArraycpy(d_pairs, s.ps.drho, rows));
           OK(PetscArrayzero(s.ps.a, rows));
           OK(PetscArrayzero(s.ps.drho, rows));
-          s.sph.sweep = SPH_SWEEP_CELLS;
-          OK(sph_force_compute(&s, &work, NULL, NULL));
+          sph_p.sweep = SPH_SWEEP_CELLS;
+          OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
           double amax = 0;
           for (PetscInt i = 0; i < s.ps.n_owned; i++) {
             assert_memory_equal(s.ps.a[i], a_pairs[i], sizeof(double[2]));

@@ -30,6 +30,10 @@ typedef struct {
 } spec;
 
 static sim s;
+/* the liquid's parameters and the body acceleration, passed to the wall pass as the sph
+ * module does */
+static sph_params sph_p;
+static double g_body[2];
 
 /* A sim with the given particles (closed box [0, 1]^2, or periodic in x),
  * ghosts and the pair list to 1.2 h (liquid between h and 1.2 h is in the
@@ -38,7 +42,7 @@ static void build(const spec *sp, int n, sph_kernel_kind kernel, const double g[
                   PetscBool periodic_x, sph_wall_kind wall) {
   OK(PetscMemzero(&s, sizeof(s)));
   s.comm = PETSC_COMM_SELF;
-  s.sph = (sph_params){.kernel = kernel,
+  sph_p = (sph_params){.kernel = kernel,
                        .h = h,
                        .rho0 = rho0,
                        .c0 = c0,
@@ -47,11 +51,10 @@ static void build(const spec *sp, int n, sph_kernel_kind kernel, const double g[
                        .density = SPH_DENSITY_CONTINUITY,
                        .p_background = p_b,
                        .wall = wall};
-  s.sph_enabled = PETSC_TRUE;
   s.dx = h / 3;
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {periodic_x, PETSC_FALSE}};
-  s.body_accel[0] = g[0];
-  s.body_accel[1] = g[1];
+  g_body[0] = g[0];
+  g_body[1] = g[1];
   fields_reset();
   if (wall == SPH_WALL_QUADRATIC)
     OK(fields_enable("to_surface"));
@@ -74,7 +77,7 @@ static void build(const spec *sp, int n, sph_kernel_kind kernel, const double g[
 static void compute(void) {
   sph_wall_work *w;
   OK(sph_wall_create(&w));
-  OK(sph_wall_compute(&s, w));
+  OK(sph_wall_compute(&s, &sph_p, g_body, w));
   OK(sph_wall_destroy(&w));
 }
 
