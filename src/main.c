@@ -1,7 +1,7 @@
 /* dmhs: Discrete Multi-Hybrid System solver (SPH liquid + mass-spring solids).
  * PetscInitialize -> sim_create -> sim_run -> sim_destroy -> PetscFinalize. */
 #include <string.h>
-#include "dmhs/sim.h"
+#include "dmhs/driver.h"
 
 static const char help[] =
     "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"

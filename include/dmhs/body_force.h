@@ -16,6 +16,9 @@ PetscErrorCode body_force_set_default_period(module *m, double period);
 PetscErrorCode body_force_get(module *m, double F[2], double *period);
 /* a_body [m/s^2] at the time of the current force evaluation (its prepare phase). */
 void body_force_current(const module *m, double a[2]);
+/* The largest |a_body| over time, |(Fx, |Fy| + g)| [m/s^2]: the SPH module's time-step
+ * limit on it (its particles' force criterion, 0.25 sqrt(h_s/|a|)). */
+double body_force_peak(const module *m);
 /* a_body [m/s^2] at time t (after the options pass). */
 void body_force_at(const module *m, double t, double a[2]);
 

@@ -29,7 +29,7 @@ PetscErrorCode integrate_first_half(struct sim *s);
 PetscErrorCode integrate_second_half(struct sim *s);
 /* Prints every limit beside dt; stops or warns (per -preflight) when dt exceeds one
  * or the kernel support holds too few neighbours at rest spacing. */
-PetscErrorCode integrate_stability_report(struct sim *s);
+
 /* Stops the run at the first non-finite value (position, velocity, density,
  * pressure, acceleration, density rate) or a particle outside the box. */
 PetscErrorCode integrate_check_state(struct sim *s);

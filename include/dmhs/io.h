@@ -34,6 +34,8 @@ typedef struct io_state {
 } io_state;
 
 /* Options pass; also called for -help. Must run before the scene is built. */
+/* <output_dir>/<name>: where every output file of the run goes. */
+PetscErrorCode io_output_path(const struct sim *s, const char *name, char *path, size_t len);
 PetscErrorCode io_set_from_options(struct sim *s);
 /* After the output directory exists: run.json ("running"), signal handlers. */
 PetscErrorCode io_setup(struct sim *s);

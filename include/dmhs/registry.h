@@ -1,4 +1,4 @@
-/* Scenes and physics modules by name (PetscFunctionList). */
+/* Scenes by name (PetscFunctionList) and -help (src/driver/registry.c). */
 #ifndef DMHS_REGISTRY_H
 #define DMHS_REGISTRY_H
 #include <petscsys.h>
@@ -10,7 +10,6 @@ struct sim;
 PetscErrorCode registry_initialize(void);
 PetscErrorCode registry_finalize(void);
 PetscErrorCode registry_create_scene(const char *name, scene **out);
-PetscErrorCode registry_create_module(const char *name, module **out);
 /* Comma-separated list of scene names, for -help and error messages. */
 PetscErrorCode registry_scene_names(char *buf, size_t len);
 /* -help: runs the chosen scene's options pass and its modules' (their values

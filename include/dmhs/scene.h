@@ -10,7 +10,7 @@ typedef struct scene scene;
 struct scene {
   const char *name;
   PetscErrorCode (*set_from_options)(scene *self, struct sim *s);
-  /* Creates domain, particles and enables modules (sim_enable_module). */
+  /* Creates domain, particles and enables modules (modules_enable). */
   PetscErrorCode (*build)(scene *self, struct sim *s);
   /* Called after every completed step (and once before step 1 with step = 0). */
   PetscErrorCode (*diagnose)(scene *self, struct sim *s);

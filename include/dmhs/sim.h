@@ -1,5 +1,6 @@
 /* struct sim owns everything: run control, domain, particles, ghosts, cells,
- * the enabled modules and the scene. The step loop lives in sim.c. */
+ * the enabled modules and the scene. The run (setup, the step loop) is the
+ * driver's (src/driver/run.c, driver.h); neighbour handling is neighbours.c. */
 #ifndef DMHS_SIM_H
 #define DMHS_SIM_H
 #include <petscsys.h>
@@ -72,15 +73,8 @@ typedef struct sim {
   io_state io;
 } sim;
 
-PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only);
-PetscErrorCode sim_run(sim *s);
-PetscErrorCode sim_destroy(sim **s);
-/* Called by scenes: adds a module (by registry name) and runs its options pass. */
-PetscErrorCode sim_enable_module(sim *s, const char *name, module **out);
 /* The enabled module of that registry name, or NULL. */
 module *sim_find_module(const sim *s, const char *name);
-/* Runs every enabled module's compute on the current positions: the force evaluation. */
-PetscErrorCode sim_compute_forces(sim *s);
 /* Which modules a force evaluation runs: those for which it is true. */
 typedef PetscBool (*module_filter)(const module *m);
 /* Zeroes a and drho of the owned and ghost rows, then sim_add_module_forces. */
@@ -89,17 +83,5 @@ PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep);
  * every prepare, then every compute, each in the order the modules were enabled; the
  * computes add to a and drho. */
 PetscErrorCode sim_add_module_forces(sim *s, module_filter keep);
-/* Rebuilds ghosts and pairs for the current positions. */
-PetscErrorCode sim_rebuild_neighbours(sim *s);
-/* Per step: migrate + rebuild when due (or forced), else refresh the ghosts. */
-PetscErrorCode sim_update_neighbours(sim *s, PetscBool force);
-/* Copies the owned rows' ghost fields into their ghosts (as between builds),
- * so that a diagnostic outside the step sees current neighbour values. */
-PetscErrorCode sim_refresh_ghosts(sim *s);
-/* After a restart: rebuilds ghosts and pairs from the positions of the last
- * build (x_build), as the uninterrupted run had them, then refreshes ghosts. */
-PetscErrorCode sim_rebuild_as_last_built(sim *s);
-/* Path of a file in the output directory. */
-PetscErrorCode sim_output_path(const sim *s, const char *name, char *path, size_t len);
 
 #endif

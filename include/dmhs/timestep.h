@@ -69,6 +69,9 @@ void timestep_advance(struct sim *s);
 /* The dt a limit is compared with: dt/N for the solids' own limits when
  * sub-cycling, dt otherwise. */
 double timestep_dt_for(const struct sim *s, PetscBool inner);
+/* Pre-flight: every module's limits against dt (and the modules' own checks); stops the run
+ * on a problem unless -preflight warn. */
+PetscErrorCode timestep_stability_report(struct sim *s);
 /* Closes dt.csv. */
 PetscErrorCode timestep_finish(struct sim *s);
 

@@ -79,7 +79,7 @@ PetscErrorCode topology_gid_slot(topology *t, PetscInt64 gid, PetscInt *slot);
 /* Number of bonded (1-2 and 1-3) partners of a particle: its bonded work, for
  * the partition's weights. */
 PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *count);
-/* Local entries from gids, after a ghost build (called by sim_rebuild_neighbours). */
+/* Local entries from gids, after a ghost build (called by neighbours_rebuild). */
 PetscErrorCode topology_resolve(topology *t, const particles *ps);
 /* True when pair (i, j) (local rows) is excluded from pair sums. */
 static inline PetscBool topology_excluded(const topology *t, const particles *ps, PetscInt i,

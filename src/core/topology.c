@@ -9,7 +9,6 @@
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/topology.h"
-#include "dmhs/bond.h"
 
 PetscErrorCode topology_create(topology **t) {
   PetscFunctionBeginUser;

@@ -38,7 +38,7 @@ static PetscErrorCode errors_profile_path(const sim *s, double t, char *path, si
   char name[64];
   PetscFunctionBeginUser;
   snprintf(name, sizeof(name), "profile_t%g.csv", t);
-  PetscCall(sim_output_path(s, name, path, len));
+  PetscCall(io_output_path(s, name, path, len));
   PetscFunctionReturn(0);
 }
 
@@ -55,7 +55,7 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
   if (s->rank == 0) {
     /* a restart continues the file (errors_checkpoint_read drops rows past the checkpoint) */
     const PetscBool append = s->io.restart_file[0] ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
+    PetscCall(io_output_path(s, "error.csv", path, sizeof(path)));
     e->csv = fopen(path, append ? "a" : "w");
     PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
                strerror(errno));
@@ -196,7 +196,7 @@ PetscErrorCode errors_checkpoint_write(errors *e, checkpoint_io *io) {
 static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8], line[512];
   PetscFunctionBeginUser;
-  PetscCall(sim_output_path(s, "error.csv", path, sizeof(path)));
+  PetscCall(io_output_path(s, "error.csv", path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing %s failed", path);
   e->csv = NULL;

@@ -500,7 +500,7 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
   }
   if (s->rank == 0) {
     char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
-    PetscCall(sim_output_path(s, "vein-summary.csv", path, sizeof(path)));
+    PetscCall(io_output_path(s, "vein-summary.csv", path, sizeof(path)));
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     FILE *f = fopen(tmp, "w");
     PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp,

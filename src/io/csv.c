@@ -66,7 +66,7 @@ PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, do
   *out = NULL;
   if (s->rank)
     PetscFunctionReturn(0);
-  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(io_output_path(s, name, path, sizeof(path)));
   if (s->io.restarted) {
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     const int err = csv_truncate(path, tmp, keep, &found);

@@ -19,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "dmhs/sim.h"
+#include "dmhs/neighbours.h"
 #include "dmhs/io.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/snapshot.h"
@@ -269,7 +270,7 @@ PetscErrorCode io_restart(sim *s) {
       PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
                  s->output_dir, strerror(err));
     }
-    PetscCall(sim_rebuild_as_last_built(s));
+    PetscCall(neighbours_rebuild_as_last_built(s));
     PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
     PetscCall(PetscPrintf(
@@ -312,7 +313,7 @@ PetscErrorCode io_output(sim *s) {
     const xdmf_connectivity bonds = {"/bonds/rows", n_bonds, 2, "bonds"};
     PetscCall(snapshot_name(io->snapshot_index, name, sizeof(name)));
     PetscCall(xdmf_add(io->xdmf, name, s->t, n, n_bonds > 0 ? &bonds : NULL));
-    PetscCall(sim_output_path(s, "particles.xdmf", path, sizeof(path)));
+    PetscCall(io_output_path(s, "particles.xdmf", path, sizeof(path)));
     PetscCall(xdmf_write(io->xdmf, path));
   }
   io->snapshot_index++;
@@ -322,7 +323,7 @@ PetscErrorCode io_output(sim *s) {
 static PetscErrorCode io_checkpoint(sim *s) {
   char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
-  PetscCall(sim_output_path(s, "checkpoint.h5", path, sizeof(path)));
+  PetscCall(io_output_path(s, "checkpoint.h5", path, sizeof(path)));
   PetscCall(checkpoint_write(s, path));
   s->io.last_checkpoint_step = s->step;
   PetscFunctionReturn(0);
@@ -345,7 +346,7 @@ PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
     PetscCall(io_checkpoint(s));
   if (any) {
     char path[PETSC_MAX_PATH_LEN];
-    PetscCall(sim_output_path(s, "checkpoint.h5", path, sizeof(path)));
+    PetscCall(io_output_path(s, "checkpoint.h5", path, sizeof(path)));
     io->stop_signal = any;
     *stop = PETSC_TRUE;
     PetscCall(PetscPrintf(s->comm,

@@ -75,7 +75,7 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.output, 0, 0, 0, 0));
   PetscCall(snapshot_name(index, name, sizeof(name)));
-  PetscCall(sim_output_path(s, name, path, sizeof(path)));
+  PetscCall(io_output_path(s, name, path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCall(h5io_offsets(s->comm, s->ps.n_owned, &offset, &n));
 

@@ -259,7 +259,7 @@ static PetscErrorCode agg_write_row(sim *s, agg_data *d) {
     char path[PETSC_MAX_PATH_LEN];
     /* a restarted run appends to the rows its first part wrote (unless it was not seeded then) */
     const PetscBool fresh = !s->io.restarted || d->restart_event == 0 ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(sim_output_path(s, "clots.csv", path, sizeof(path)));
+    PetscCall(io_output_path(s, "clots.csv", path, sizeof(path)));
     d->csv = fopen(path, fresh ? "w" : "a");
     PetscCheck(d->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot open %s", path);
     if (fresh) {

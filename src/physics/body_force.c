@@ -154,17 +154,10 @@ static PetscErrorCode body_force_compute(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-/* 0.25 sqrt(h_s/|a|) with h_s = h/2 and the peak |a| */
-static PetscErrorCode body_force_max_dt(module *self, sim *s, dt_limits *l) {
-  body_force_data *d = self->data;
-  PetscFunctionBeginUser;
-  const double amax = PetscSqrtReal(d->F[0] * d->F[0] + (PetscAbsReal(d->F[1]) + d->gravity) *
-                                                            (PetscAbsReal(d->F[1]) + d->gravity));
-  const sph_params *sp = sph_params_get(s);
-  if (amax > 0 && sp)
-    PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2",
-                            0.25 * PetscSqrtReal(0.5 * sp->h / amax)));
-  PetscFunctionReturn(0);
+double body_force_peak(const module *m) {
+  const body_force_data *d = m->data;
+  const double ay = PetscAbsReal(d->F[1]) + d->gravity;
+  return PetscSqrtReal(d->F[0] * d->F[0] + ay * ay);
 }
 
 static PetscErrorCode body_force_view(module *self, sim *s, PetscViewer v) {
@@ -192,7 +185,6 @@ PetscErrorCode body_force_module_create(module **m) {
   (*m)->set_from_options = body_force_set_from_options;
   (*m)->prepare = body_force_prepare;
   (*m)->compute = body_force_compute;
-  (*m)->max_dt = body_force_max_dt;
   (*m)->view = body_force_view;
   (*m)->destroy = body_force_destroy;
   PetscCall(PetscNew((body_force_data **)&(*m)->data));

@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
+#include "dmhs/neighbours.h"
 #include "dmhs/bond.h"
 
 const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
@@ -91,7 +93,7 @@ PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n
 PetscErrorCode bond_ensure_resolved(sim *s) {
   PetscFunctionBeginUser;
   if (!s->topo->resolved)
-    PetscCall(sim_rebuild_neighbours(s));
+    PetscCall(neighbours_rebuild(s));
   PetscFunctionReturn(0);
 }
 
@@ -120,8 +122,7 @@ PetscErrorCode topology_enable(sim *s, bond_style style) {
       "LAMMPS special_bonds lj/coul 0 0 1 angle yes)",
       NULL, s->topo->special_include, &s->topo->special_include, NULL));
   PetscOptionsEnd();
-  PetscCall(
-      sim_enable_module(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
-  PetscCall(sim_enable_module(s, "angle_harmonic", NULL));
+  PetscCall(modules_enable(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
+  PetscCall(modules_enable(s, "angle_harmonic", NULL));
   PetscFunctionReturn(0);
 }

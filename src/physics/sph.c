@@ -230,6 +230,12 @@ static PetscErrorCode sph_max_dt(module *self, sim *s, dt_limits *l) {
         dt_limits_add(l, "sph viscosity", "0.125 h_s^2/nu, h_s = h/2", 0.125 * hs * hs / sp->nu));
   /* Monaghan's force criterion on the accelerations of the last force
    * evaluation (none before the first one) */
+  /* the same criterion on the body force's peak (it may drive an empty or resting liquid) */
+  const module *body = sim_find_module(s, "body_force");
+  const double a_body = body ? body_force_peak(body) : 0.0;
+  if (a_body > 0)
+    PetscCall(dt_limits_add(l, "body force", "0.25 sqrt(h_s/|a|), h_s = h/2",
+                            0.25 * PetscSqrtReal(hs / a_body)));
   if (global[1] > 0)
     PetscCall(dt_limits_add(l, "sph acceleration", "0.25 sqrt(h_s/max|a|), liquid, h_s = h/2",
                             0.25 * PetscSqrtReal(hs / global[1])));

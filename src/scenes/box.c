@@ -4,6 +4,7 @@
  * so that every pass of the solver does real work. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 
 typedef struct {
@@ -27,7 +28,7 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   s->dx = b->dx;
   /* the vein case's liquid (doc/cases.md) */
   module *sph;
-  PetscCall(sim_enable_module(s, "sph", &sph));
+  PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 2.5 * b->dx;

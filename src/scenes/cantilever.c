@@ -15,6 +15,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
@@ -55,7 +56,7 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   PetscCall(topology_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, CANTILEVER_K, CANTILEVER_R0, 0.5 * CANTILEVER_R0));
   PetscCall(angle_set_default(s, CANTILEVER_KA, 90.0));
-  PetscCall(sim_enable_module(s, "solid_load", &c->load));
+  PetscCall(modules_enable(s, "solid_load", &c->load));
   /* default load: 1 % of L tip deflection, and damping near the first
    * frequency, both for the default beam (override with -solid_load_force, -solid_damping) */
   double EI, kGA, mu;

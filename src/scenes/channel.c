@@ -7,6 +7,7 @@
  * (diag/errors.c). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/fields.h"
 #include "dmhs/channel.h"
 #include "dmhs/analytic.h"
@@ -77,7 +78,7 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
 
   /* the published channel setup; every value can be overridden with -sph_* */
   module *sph;
-  PetscCall(sim_enable_module(s, "sph", &sph));
+  PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 3.0 * s->dx;
@@ -95,7 +96,7 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
    * options are read after the scene's, so it is provided whatever they say) */
   PetscCall(fields_enable("to_surface"));
   if (c->flow == CHANNEL_POISEUILLE) {
-    PetscCall(sim_enable_module(s, "body_force", &c->body));
+    PetscCall(modules_enable(s, "body_force", &c->body));
     PetscCall(body_force_set_default(c->body, 2e-4, 0.0));
   }
   PetscCall(errors_set_from_options(&c->err, s));

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/gather.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
@@ -80,7 +81,7 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
    * behind the tip and the density varied 20 %). c0 = 1 m/s gives B = 143 Pa,
    * density variations ~1 %, and costs nothing: dt is set by the bonds. */
   module *sph;
-  PetscCall(sim_enable_module(s, "sph", &sph));
+  PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 2.5 * f->dx;
@@ -89,13 +90,13 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   sp->nu = 1e-4;
   sp->eos = SPH_EOS_TAIT;
   sp->density = SPH_DENSITY_CONTINUITY;
-  PetscCall(sim_enable_module(s, "body_force", &f->body));
+  PetscCall(modules_enable(s, "body_force", &f->body));
   PetscCall(body_force_set_default(f->body, 0.5, 0.0));
   PetscCall(topology_enable(s, BOND_HARMONIC));
   /* a soft flap: EI = K dx^3 + 2 k_a dx (doc/theory.md) */
   PetscCall(bond_set_default(s, 2e3, f->dx, 0.5 * f->dx));
   PetscCall(angle_set_default(s, 1e-5, 90.0));
-  PetscCall(sim_enable_module(s, "repulsion", &f->rep));
+  PetscCall(modules_enable(s, "repulsion", &f->rep));
   PetscCall(repulsion_set_default(f->rep, 1e-6, f->dx, 4, 2));
   PetscFunctionReturn(0);
 }
@@ -436,7 +437,7 @@ static PetscErrorCode flap_finish(scene *self, sim *s) {
   PetscCall(PetscFree(mine));
   if (s->rank == 0) {
     qsort(all, n_all / FLAP_ROW, FLAP_ROW * sizeof(double), flap_compare_gid);
-    PetscCall(sim_output_path(s, "flap-particles.csv", path, sizeof(path)));
+    PetscCall(io_output_path(s, "flap-particles.csv", path, sizeof(path)));
     FILE *out = fopen(path, "w");
     PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
                strerror(errno));

@@ -37,6 +37,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
@@ -118,7 +119,7 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   s->dx = c->dx;
   /* the published case; h = 2.5 dx, not the published h = dx (no neighbour inside the support) */
   module *sph;
-  PetscCall(sim_enable_module(s, "sph", &sph));
+  PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 2.5 * c->dx;
@@ -142,14 +143,14 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
   if (!set)
     s->dt = 0.0;
-  PetscCall(sim_enable_module(s, "body_force", &c->body));
+  PetscCall(modules_enable(s, "body_force", &c->body));
   PetscCall(body_force_set_default_gravity(c->body, 9.81));
   /* the published membrane is nonlinear (FENE-like) */
   PetscCall(topology_enable(s, BOND_NONLINEAR));
   /* k_b = 1e-4 J, r0 = dx, r_max = 1.8 dx (4.5e-4 m at dx = 2.5e-4 m) */
   PetscCall(bond_set_default(s, 1e-4, c->dx, 1.8 * c->dx));
   PetscCall(angle_set_default(s, 8e-5, 90.0));
-  PetscCall(sim_enable_module(s, "repulsion", &c->rep));
+  PetscCall(modules_enable(s, "repulsion", &c->rep));
   /* K = 8000 J/m^2 x dx^2 (2e-3 J at dx = 5e-4 m, 5e-4 J at the study's
    * 2.5e-4 m), not the published 1e-10 J (doc/validation.md, "Intestine"):
    * where the wave stretches the membrane to ~1.9 r0, a liquid particle in a
@@ -159,7 +160,7 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
    * let it through near a clamped end). The repulsion's limit, 0.035 dx
    * [s/m], binds dt: 1.8x below the sound speed's at c0 = 5 m/s. */
   PetscCall(repulsion_set_default(c->rep, 8000.0 * c->dx * c->dx, c->dx, 4, 2));
-  PetscCall(sim_enable_module(s, "peristalsis", &c->peri));
+  PetscCall(modules_enable(s, "peristalsis", &c->peri));
   PetscCall(peristalsis_set_geometry(c->peri, c->n_pockets, c->b, 0.0));
   PetscFunctionReturn(0);
 }
@@ -493,7 +494,7 @@ static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const d
                                               PetscInt n) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   PetscFunctionBeginUser;
-  PetscCall(sim_output_path(s, "intestine-summary.csv", path, sizeof(path)));
+  PetscCall(io_output_path(s, "intestine-summary.csv", path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));

@@ -35,6 +35,8 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
+#include "dmhs/neighbours.h"
 #include "dmhs/scenes.h"
 #include "dmhs/fields.h"
 #include "dmhs/bond.h"
@@ -103,7 +105,7 @@ static PetscErrorCode vein_choose_seeds(sim *s, void *ctx, PetscInt *n, PetscInt
   (void)ctx;
   /* current neighbour values (ghosts are refreshed only at the next step's
    * start): the stresses, hence the seeds, are then the same on any rank count */
-  PetscCall(sim_refresh_ghosts(s));
+  PetscCall(neighbours_refresh_ghosts(s));
   PetscCall(stress_compute(s));
   PetscCall(vein_extreme_sinus(s, s->ps.stress_mag, +1, -1, &gids[0]));
   PetscCall(vein_extreme_sinus(s, s->ps.displacement, -1, gids[0], &gids[1]));
@@ -194,7 +196,7 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
    * continuity); its viscosity is not stated: blood's nu = 3.3e-6 m^2/s
    * (doc/validation.md, "Vein: peak inlet velocity", judges the choice) */
   module *sph;
-  PetscCall(sim_enable_module(s, "sph", &sph));
+  PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 2.5 * v->dx;
@@ -226,17 +228,17 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCall(fields_enable("body"));
   PetscCall(fields_enable("side"));
   PetscCall(stress_enable());
-  PetscCall(sim_enable_module(s, "body_force", &v->body));
+  PetscCall(modules_enable(s, "body_force", &v->body));
   PetscCall(body_force_set_default(v->body, 0.1, 0.0));
   PetscCall(body_force_set_default_period(v->body, 4.0));
   PetscCall(topology_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, 1e6 / (r * r * r), v->dx, 0.5 * v->dx));
   PetscCall(angle_set_default(s, v->ka_ref / r, 90.0));
-  PetscCall(sim_enable_module(s, "repulsion", &v->rep));
+  PetscCall(modules_enable(s, "repulsion", &v->rep));
   PetscCall(repulsion_set_default(v->rep, 4e-4 * r * r, v->dx, 4, 2));
   PetscCall(repulsion_set_bodies(v->rep, PETSC_TRUE));
   if (v->clots) {
-    PetscCall(sim_enable_module(s, "agglomeration", &v->agg));
+    PetscCall(modules_enable(s, "agglomeration", &v->agg));
     /* R_max = 2.5e-4 m at the published dx, like every length of the scene */
     PetscCall(agglomeration_set_defaults(v->agg, 2.5 * v->dx, -1));
     PetscCall(agglomeration_set_seed_chooser(v->agg, vein_choose_seeds, v));

@@ -9,6 +9,9 @@
 #include <string.h>
 #include <cmocka.h>
 #include "dmhs/sim.h"
+#include "dmhs/neighbours.h"
+#include "dmhs/modules.h"
+#include "dmhs/driver.h"
 #include "dmhs/registry.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
@@ -52,7 +55,7 @@ static inline void fixture_setup(sim *s) {
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->setup)
       OK(s->modules[m]->setup(s->modules[m], s));
-  OK(sim_rebuild_neighbours(s));
+  OK(neighbours_rebuild(s));
   OK(sim_compute_forces(s));
 }
 
@@ -92,7 +95,7 @@ static inline void fixture_step(sim *s) {
   s->t = s->step * s->dt;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
     domain_wrap(&s->dom, s->ps.x[i]);
-  OK(sim_rebuild_neighbours(s));
+  OK(neighbours_rebuild(s));
   OK(sim_compute_forces(s));
   OK(integrate_second_half(s));
 }

@@ -11,12 +11,14 @@
  *   - -body_force_types fluid,solid,clot; walls are refused;
  *   - the option errors (F and amplitude together, a negative period, three
  *     components) and the scene defaults (body_force_set_default*, _get);
- *   - the time-step limit 0.25 sqrt(0.5 h / |a|max), |a|max = |(Fx, |Fy| + g)|;
+ *   - the SPH module's time-step limit on it, 0.25 sqrt(0.5 h / |a|max),
+ *     |a|max = |(Fx, |Fy| + g)| (body_force_peak);
  *   - the two phases of a force evaluation (sim_add_module_forces): a module
  *     enabled before body_force reads, during its compute, the body force at
  *     the evaluation's own time, not the previous evaluation's. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 #include "dmhs/body_force.h"
 #include "dmhs/registry.h"
 #include "dmhs/integrate.h"
@@ -164,32 +166,39 @@ static void test_scene_defaults(void **state) {
   /* body_force_get on another module is an error, not a read of its data */
   module *other;
   OK(registry_initialize());
-  OK(registry_create_module("peristalsis", &other));
+  OK(modules_create("peristalsis", &other));
   assert_int_equal(body_force_get(other, F, &T), PETSC_ERR_ARG_WRONG);
   OK(other->destroy(other));
   OK(PetscFree(other));
   OK(registry_finalize());
 }
 
+/* The "body force" limit of the SPH module (its force criterion on the drive's peak). */
+static double body_force_limit(void) {
+  dt_limits l = {0};
+  OK(sph->max_dt(sph, &s, &l));
+  for (int k = 0; k < l.n; k++)
+    if (!strcmp(l.item[k].name, "body force"))
+      return l.item[k].value;
+  return -1.0; /* none */
+}
+
 static void test_max_dt(void **state) {
   (void)state;
+  sph_defaults(sph)->c0 = 1.0;
   OK(PetscOptionsInsertString(NULL, "-body_force 0.3,-0.2 -gravity 9.81"));
   OK(m->set_from_options(m, &s));
-  dt_limits l = {0};
-  int which;
-  OK(m->max_dt(m, &s, &l));
-  assert_int_equal(l.n, 1);
   /* |a|max = sqrt(0.3^2 + (0.2 + 9.81)^2) */
   const double amax = sqrt(0.09 + 10.01 * 10.01), want = 0.25 * sqrt(0.5 * 4e-4 / amax);
-  const double got = dt_limits_min(&l, &which);
+  assert_close(body_force_peak(m), amax, 1e-15);
+  const double got = body_force_limit();
   assert_true(got <= want && got >= want * (1.0 - 0x1p-23)); /* limits are rounded down */
   /* no drive, no gravity: no limit */
   OK(PetscOptionsClear(NULL));
   OK(PetscOptionsInsertString(NULL, "-body_force 0,0 -gravity 0"));
   OK(m->set_from_options(m, &s));
-  dt_limits none = {0};
-  OK(m->max_dt(m, &s, &none));
-  assert_int_equal(none.n, 0);
+  assert_true(body_force_peak(m) == 0.0);
+  assert_true(body_force_limit() == -1.0);
 }
 
 /* A module enabled before body_force that reads body_force_current in its compute,

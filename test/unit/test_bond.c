@@ -77,7 +77,7 @@ static PetscErrorCode stretched_pair(double f, PetscErrorCode *result) {
   const double zero[2] = {0, 0}, r0 = 2.5e-4, L = 4.5e-4;
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
   PetscFunctionBeginUser;
-  OK(sim_enable_module(s, "bond_nonlinear", NULL));
+  OK(modules_enable(s, "bond_nonlinear", NULL));
   const double xa[2] = {4e-3, 5e-3}, xb[2] = {4e-3 + r0 + f * L, 5e-3};
   OK(particles_add_owned(&s->ps, 10, PTYPE_SOLID, xa, zero, 1e-5, 1000, NULL));
   OK(particles_add_owned(&s->ps, 11, PTYPE_SOLID, xb, zero, 1e-5, 1000, NULL));
@@ -86,7 +86,7 @@ static PetscErrorCode stretched_pair(double f, PetscErrorCode *result) {
     OK(s->modules[m]->set_from_options(s->modules[m], s));
   OK(halo_create(&s->hal, 1e-3, PETSC_COMM_SELF));
   OK(s->modules[0]->setup(s->modules[0], s));
-  OK(sim_rebuild_neighbours(s));
+  OK(neighbours_rebuild(s));
   OK(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   *result = sim_compute_forces(s);
   OK(PetscPopErrorHandler());

@@ -1,5 +1,5 @@
-/* The registry of scenes and physics modules (src/core/registry.c) and
- * sim_enable_module. Proves:
+/* The registry of scenes (src/driver/registry.c), the physics modules by name
+ * (src/physics/modules.c) and modules_enable. Proves:
  *   - every scene and module the solver documents is registered under its
  *     name and creates an object of that name with the callbacks the step
  *     loop calls; the interaction needs of the pair and bonded modules;
@@ -7,11 +7,12 @@
  *   - registry_scene_names lists the scenes in order, in a buffer of exactly
  *     the length needed, and refuses a buffer too small without writing past it;
  *   - initialize twice is harmless, finalize then initialize works again;
- *   - sim_enable_module adds a module once and refuses it twice. */
+ *   - modules_enable adds a module once and refuses it twice. */
 #include <string.h>
 #include "unit_common.h"
 #include "dmhs/registry.h"
 #include "dmhs/sim.h"
+#include "dmhs/modules.h"
 
 static const char *const scene_names[] = {"poiseuille", "couette",   "box", "cantilever",
                                           "flap",       "intestine", "vein"};
@@ -42,7 +43,7 @@ static void test_modules(void **state) {
   (void)state;
   for (size_t k = 0; k < N_MODULES; k++) {
     module *m = NULL;
-    OK(registry_create_module(module_names[k], &m));
+    OK(modules_create(module_names[k], &m));
     assert_non_null(m);
     assert_string_equal(m->name, module_names[k]);
     assert_non_null(m->set_from_options);
@@ -64,7 +65,7 @@ static void test_modules(void **state) {
               {"peristalsis", 0, PETSC_FALSE}};
   for (size_t k = 0; k < sizeof(want) / sizeof(want[0]); k++) {
     module *m;
-    OK(registry_create_module(want[k].name, &m));
+    OK(modules_create(want[k].name, &m));
     if (m->needs != want[k].needs)
       fail_msg("module %s: needs 0x%x, expected 0x%x", m->name, m->needs, want[k].needs);
     assert_int_equal(m->solid_internal, want[k].solid_internal);
@@ -76,9 +77,9 @@ static void test_unknown_names(void **state) {
   (void)state;
   module *m = NULL;
   scene *s = NULL;
-  assert_int_equal(registry_create_module("sph2", &m), PETSC_ERR_ARG_UNKNOWN_TYPE);
+  assert_int_equal(modules_create("sph2", &m), PETSC_ERR_ARG_UNKNOWN_TYPE);
   assert_null(m);
-  assert_int_equal(registry_create_module("", &m), PETSC_ERR_ARG_UNKNOWN_TYPE);
+  assert_int_equal(modules_create("", &m), PETSC_ERR_ARG_UNKNOWN_TYPE);
   assert_int_equal(registry_create_scene("intestin", &s), PETSC_ERR_ARG_UNKNOWN_TYPE);
   assert_null(s);
 }
@@ -124,11 +125,11 @@ static void test_initialize_finalize(void **state) {
   (void)state;
   module *m;
   OK(registry_initialize()); /* again: harmless */
-  OK(registry_create_module("sph", &m));
+  OK(modules_create("sph", &m));
   destroy_module(m);
   OK(registry_finalize());
   OK(registry_initialize());
-  OK(registry_create_module("body_force", &m));
+  OK(modules_create("body_force", &m));
   destroy_module(m);
 }
 
@@ -138,15 +139,15 @@ static void test_enable_module(void **state) {
   module *m = NULL, *again = NULL;
   OK(PetscMemzero(&s, sizeof(s)));
   s.comm = PETSC_COMM_SELF;
-  OK(sim_enable_module(&s, "body_force", &m));
+  OK(modules_enable(&s, "body_force", &m));
   assert_int_equal(s.n_modules, 1);
   assert_true(s.modules[0] == m);
-  OK(sim_enable_module(&s, "peristalsis", NULL));
+  OK(modules_enable(&s, "peristalsis", NULL));
   assert_int_equal(s.n_modules, 2);
   assert_string_equal(s.modules[1]->name, "peristalsis");
-  assert_int_equal(sim_enable_module(&s, "body_force", &again), PETSC_ERR_PLIB);
+  assert_int_equal(modules_enable(&s, "body_force", &again), PETSC_ERR_PLIB);
   assert_int_equal(s.n_modules, 2);
-  assert_int_equal(sim_enable_module(&s, "no_module", &again), PETSC_ERR_ARG_UNKNOWN_TYPE);
+  assert_int_equal(modules_enable(&s, "no_module", &again), PETSC_ERR_ARG_UNKNOWN_TYPE);
   assert_int_equal(s.n_modules, 2);
   for (int k = 0; k < s.n_modules; k++)
     destroy_module(s.modules[k]);

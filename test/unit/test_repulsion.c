@@ -38,7 +38,7 @@ static void test_repulsion_module(void **state) {
   const double zero[2] = {0, 0};
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
   module *m;
-  OK(sim_enable_module(s, "repulsion", &m));
+  OK(modules_enable(s, "repulsion", &m));
   const double xs[2] = {5e-3, 5e-3}, xf[2] = {5e-3 + 0.6e-4, 5e-3 + 0.3e-4},
                xf2[2] = {5e-3 - 0.5e-4, 5e-3};
   OK(particles_add_owned(&s->ps, 0, PTYPE_SOLID, xs, zero, 2e-5, 1000, NULL));

@@ -129,7 +129,7 @@ static void test_pressure_repels(void **state) {
 static int cloud_coincident = 0;
 
 /* A random cloud of n fluid particles in a periodic [0, Lx) x [0, Ly) box, with
- * ghosts and the pair list built as sim_rebuild_neighbours does. */
+ * ghosts and the pair list built as neighbours_rebuild does. */
 /* every 7th particle a wall (the wall-wall pairs the pair list leaves out) */
 static int cloud_walls = 0;
 

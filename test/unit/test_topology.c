@@ -14,8 +14,8 @@ static void test_periodic_bond(void **state) {
   (void)state;
   const double zero[2] = {0, 0}, L = 1e-3, K = 1e6, r0 = 1.2e-4, m = 2e-5;
   sim *s = fixture_create(L, L, PETSC_TRUE);
-  OK(sim_enable_module(s, "bond_harmonic", NULL));
-  OK(sim_enable_module(s, "angle_harmonic", NULL));
+  OK(modules_enable(s, "bond_harmonic", NULL));
+  OK(modules_enable(s, "angle_harmonic", NULL));
   OK(bond_set_default(s, K, r0, 0));
   const double xa[2] = {0.05e-3, 0.5e-3}, xb[2] = {L - 0.05e-3, 0.5e-3},
                xc[2] = {L - 0.05e-3, 0.6e-3};
@@ -39,7 +39,7 @@ static void test_periodic_bond(void **state) {
   /* a partner that is not there is an error naming both gids */
   OK(topology_add_bond(s->topo, 7, 99, 0));
   OK(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  const PetscErrorCode r = sim_rebuild_neighbours(s);
+  const PetscErrorCode r = neighbours_rebuild(s);
   OK(PetscPopErrorHandler());
   assert_int_equal(r, PETSC_ERR_PLIB);
   fixture_destroy(&s);
@@ -70,9 +70,9 @@ static void test_exclusions(void **state) {
   for (int include = 0; include < 2; include++) {
     sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
     module *rep;
-    OK(sim_enable_module(s, "bond_harmonic", NULL));
-    OK(sim_enable_module(s, "angle_harmonic", NULL));
-    OK(sim_enable_module(s, "repulsion", &rep));
+    OK(modules_enable(s, "bond_harmonic", NULL));
+    OK(modules_enable(s, "angle_harmonic", NULL));
+    OK(modules_enable(s, "repulsion", &rep));
     OK(repulsion_set_default(rep, 4e-4, 1.5e-4, 4, 2)); /* cutoff 1.5 r0: sides and diagonals */
     s->topo->special_include = include ? PETSC_TRUE : PETSC_FALSE;
     build_strip(s, 3, 1e-4, 2e-5, 0);
@@ -92,8 +92,8 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   const double r0 = 1e-4, m = 2e-5;
   sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
   fixture_substeps(s, substeps);
-  OK(sim_enable_module(s, bond_module, NULL));
-  OK(sim_enable_module(s, "angle_harmonic", NULL));
+  OK(modules_enable(s, bond_module, NULL));
+  OK(modules_enable(s, "angle_harmonic", NULL));
   OK(bond_set_default(s, k, r0, rmax));
   OK(angle_set_default(s, ka, 90));
   build_strip(s, n, r0, m, 0);

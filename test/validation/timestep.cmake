@@ -1,4 +1,4 @@
-# Time-step control (src/core/timestep.c). The quick colon case with -dt 0 is
+# Time-step control (src/driver/timestep.c). The quick colon case with -dt 0 is
 # the stiff one that moves: its angle and then repulsion limits follow the
 # membrane and the liquid, so dt changes about 170 times in its 0.26 s.
 #  * the automatic dt is rank invariant (final states and dt.csv, 1-3 ranks)

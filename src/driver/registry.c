@@ -1,18 +1,12 @@
-/* Scenes and physics modules by name (PetscFunctionList), so -scene picks a
- * builder and -help can list every scene's and module's options. The two
- * tables below are the only place a new scene or module is registered. */
+/* Scenes by name (PetscFunctionList), so -scene picks a builder, and -help, which lists
+ * every scene's and module's options. The table below is the only place a new scene is
+ * registered (modules: src/physics/modules.c). */
 #include <string.h>
 #include "dmhs/registry.h"
 #include "dmhs/sim.h"
 #include "dmhs/strbuf.h"
-#include "dmhs/body_force.h"
 #include "dmhs/scenes.h"
-#include "dmhs/bond.h"
-#include "dmhs/angle_harmonic.h"
-#include "dmhs/repulsion.h"
-#include "dmhs/solid_load.h"
-#include "dmhs/peristalsis.h"
-#include "dmhs/agglomeration.h"
+#include "dmhs/modules.h"
 
 static const struct {
   const char *name;
@@ -27,26 +21,9 @@ static const struct {
     {"vein", vein_scene_create},
 };
 
-static const struct {
-  const char *name;
-  PetscErrorCode (*create)(module **);
-} module_table[] = {
-    {"sph", sph_module_create},
-    {"body_force", body_force_module_create},
-    /* solids */
-    {"bond_harmonic", bond_harmonic_module_create},
-    {"bond_nonlinear", bond_nonlinear_module_create},
-    {"angle_harmonic", angle_harmonic_module_create},
-    {"repulsion", repulsion_module_create},
-    {"solid_load", solid_load_module_create},
-    {"peristalsis", peristalsis_module_create},     /* intestine */
-    {"agglomeration", agglomeration_module_create}, /* vein clots */
-};
+#define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))
 
-#define N_SCENES  (sizeof(scene_table) / sizeof(scene_table[0]))
-#define N_MODULES (sizeof(module_table) / sizeof(module_table[0]))
-
-static PetscFunctionList scene_list, module_list;
+static PetscFunctionList scene_list;
 
 PetscErrorCode registry_initialize(void) {
   PetscFunctionBeginUser;
@@ -54,15 +31,12 @@ PetscErrorCode registry_initialize(void) {
     PetscFunctionReturn(0);
   for (size_t k = 0; k < N_SCENES; k++)
     PetscCall(PetscFunctionListAdd(&scene_list, scene_table[k].name, scene_table[k].create));
-  for (size_t k = 0; k < N_MODULES; k++)
-    PetscCall(PetscFunctionListAdd(&module_list, module_table[k].name, module_table[k].create));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode registry_finalize(void) {
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListDestroy(&scene_list));
-  PetscCall(PetscFunctionListDestroy(&module_list));
   PetscFunctionReturn(0);
 }
 
@@ -89,16 +63,6 @@ PetscErrorCode registry_create_scene(const char *name, scene **out) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode registry_create_module(const char *name, module **out) {
-  PetscErrorCode (*create)(module **) = NULL;
-  PetscFunctionBeginUser;
-  PetscCall(PetscFunctionListFind(module_list, name, &create));
-  PetscCheck(create, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "unknown physics module '%s'",
-             name);
-  PetscCall(create(out));
-  PetscFunctionReturn(0);
-}
-
 /* -help: the options pass of scene k, then of each module it enables that has
  * not had its pass yet; modules destroyed after (a pass may look at the others). */
 static PetscErrorCode registry_help_scene(sim *s, size_t k, PetscBool printed[]) {
@@ -107,8 +71,8 @@ static PetscErrorCode registry_help_scene(sim *s, size_t k, PetscBool printed[])
   PetscCall(registry_create_scene(scene_table[k].name, &scn));
   PetscCall(scn->set_from_options(scn, s));
   for (int m = 0; m < s->n_modules; m++) {
-    for (size_t j = 0; j < N_MODULES; j++)
-      if (!strcmp(module_table[j].name, s->modules[m]->name) && !printed[j]) {
+    for (size_t j = 0; j < modules_count(); j++)
+      if (!strcmp(modules_name(j), s->modules[m]->name) && !printed[j]) {
         PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
         printed[j] = PETSC_TRUE;
       }
@@ -125,9 +89,11 @@ static PetscErrorCode registry_help_scene(sim *s, size_t k, PetscBool printed[])
 
 PetscErrorCode registry_print_help(sim *s, const char *chosen) {
   static char note[96];
-  PetscBool printed[N_MODULES] = {PETSC_FALSE}, user_style;
+  PetscBool printed[32] = {PETSC_FALSE}, user_style;
   size_t first = N_SCENES;
   PetscFunctionBeginUser;
+  PetscCheck(modules_count() <= sizeof(printed) / sizeof(printed[0]), PETSC_COMM_SELF,
+             PETSC_ERR_PLIB, "registry_print_help: more modules than it can track");
   for (size_t k = 0; k < N_SCENES; k++)
     if (!strcmp(scene_table[k].name, chosen))
       first = k;

@@ -301,3 +301,41 @@ PetscErrorCode timestep_finish(sim *s) {
   PetscCall(csv_close(&s->ts.csv, "dt.csv"));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode timestep_stability_report(sim *s) {
+  dt_limits limits = {0};
+  int problems = 0;
+  PetscFunctionBeginUser;
+  PetscCall(timestep_collect_limits(s, &limits));
+  PetscCall(timestep_choose_first(s, &limits)); /* -dt 0: the first dt */
+  if (s->ts.subcycling)
+    PetscCall(PetscPrintf(
+        s->comm,
+        "Stability report (pre-flight), dt = %g s, %" PetscInt_FMT
+        " solid sub-steps (the solids' own limits, marked *, against dt/%" PetscInt_FMT "):\n",
+        s->dt, s->ts.n_sub, s->ts.n_sub));
+  else
+    PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
+  for (int k = 0; k < limits.n; k++) {
+    const dt_limit *l = &limits.item[k];
+    const double dt = timestep_dt_for(s, l->inner);
+    const PetscBool over = dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s%s\n", l->name,
+                          l->formula, l->value, dt / l->value,
+                          s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
+    problems += over;
+  }
+  for (int m = 0; m < s->n_modules; m++) /* the modules' own checks (e.g. SPH's support) */
+    if (s->modules[m]->preflight)
+      PetscCall(s->modules[m]->preflight(s->modules[m], s, &problems));
+  if (problems) {
+    const char *what =
+        "dt exceeds a time-step limit or the kernel support holds too few neighbours "
+        "(see the report above): lower -dt (or -dt 0 for automatic) / raise -sph_h";
+    PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "pre-flight check failed: %s; -preflight warn runs anyway", what);
+    PetscCall(PetscPrintf(s->comm, "WARNING: pre-flight check: %s (continuing: -preflight warn)\n",
+                          what));
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,330 @@
+/* The driver: the run-control options pass, setup (scene, modules, ghosts,
+ * pre-flight checks), the step loop and teardown.
+ *
+ * One step:
+ *   time-step limits (check or adapt dt) -> first kick + drift -> migrate (wrap / owners) -> ghosts
+ * + pair list
+ *   -> modules' compute (forces, density rates) -> second kick
+ *   -> state check (stop before any NaN is written) -> scene diagnostics -> progress */
+#include <errno.h>
+#include <string.h>
+#include <unistd.h>
+#include <sys/stat.h>
+#include "dmhs/driver.h"
+#include "dmhs/sim.h"
+#include "dmhs/neighbours.h"
+#include "dmhs/fields.h"
+#include "dmhs/events.h"
+#include "dmhs/registry.h"
+#include "dmhs/modules.h"
+#include "dmhs/integrate.h"
+#include "dmhs/migrate.h"
+#include "dmhs/progress.h"
+#include "dmhs/dump.h" /* mpi */
+#include "dmhs/substep.h"
+
+const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
+                                              NULL};
+
+static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len) {
+  char names[256];
+  PetscBool traceback = PETSC_FALSE; /* acted on by main, before any option is read here */
+  PetscFunctionBeginUser;
+  PetscCall(registry_scene_names(names, sizeof(names)));
+  PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
+  PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
+  PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
+      preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL,
+                               s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
+  PetscCall(PetscOptionsReal("-output_interval",
+                             "Physical time between output rows/snapshots [s] (0 = t_end/100)",
+                             NULL, s->output_interval, &s->output_interval, NULL));
+  PetscCall(PetscOptionsReal("-progress_interval",
+                             "Physical time between progress lines [s] (0 = t_end/20)", NULL,
+                             s->progress_interval, &s->progress_interval, NULL));
+  PetscCall(
+      PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+  PetscCall(PetscOptionsReal(
+      "-neighbour_skin",
+      "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
+      "and pairs every step)",
+      NULL, s->skin_ratio, &s->skin_ratio, NULL));
+  PetscCall(PetscOptionsBool("-dmhs_traceback",
+                             "On an error, PETSc's full traceback instead of the one-line message",
+                             NULL, traceback, &traceback, NULL));
+  PetscOptionsEnd();
+  PetscCall(timestep_set_from_options(s));
+  PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)",
+             s->t_end);
+  PetscCheck(s->skin_ratio >= 0 && s->skin_ratio <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
+  PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-output_interval must be >= 0 (got %g)", s->output_interval);
+  PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-progress_interval must be >= 0 (got %g)", s->progress_interval);
+  if (s->output_interval == 0)
+    s->output_interval = s->t_end / 100;
+  if (s->progress_interval == 0)
+    s->progress_interval = s->t_end / 20;
+  PetscFunctionReturn(0);
+}
+
+/* An option nobody read is a typo or belongs to a module this scene does not
+ * enable: either way the user's intent would be silently ignored. */
+static PetscErrorCode sim_check_unused_options(sim *s) {
+  PetscInt n;
+  char **names, **values;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt k = 0; k < n; k++)
+    PetscCall(PetscPrintf(s->comm,
+                          "dmhs: option -%s %s was not used by scene '%s' or its modules\n",
+                          names[k], values[k] ? values[k] : "", s->scn->name));
+  const PetscInt n_unused = n;
+  const PetscBool clean = n == 0 ? PETSC_TRUE : PETSC_FALSE;
+  const char *first = n ? names[0] : "";
+  char first_copy[256];
+  PetscCall(PetscStrncpy(first_copy, first, sizeof(first_copy)));
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscCheck(clean, s->comm, PETSC_ERR_ARG_WRONG,
+             "unknown or unused option -%s (and %" PetscInt_FMT
+             " more); run with -help to list the options",
+             first_copy, n_unused - 1);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sim_prepare_output_dir(sim *s) {
+  char probe[PETSC_MAX_PATH_LEN];
+  PetscFunctionBeginUser;
+  if (s->rank == 0) {
+    char partial[PETSC_MAX_PATH_LEN];
+    PetscCall(PetscStrncpy(partial, s->output_dir, sizeof(partial)));
+    /* mkdir -p: each prefix in turn */
+    for (char *c = partial + 1;; c++) {
+      const char saved = *c;
+      if (saved != '/' && saved != 0)
+        continue;
+      *c = 0;
+      PetscCheck(mkdir(partial, 0777) == 0 || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+                 "-output_dir %s: cannot create %s: %s", s->output_dir, partial, strerror(errno));
+      *c = saved;
+      if (!saved)
+        break;
+    }
+    PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s/.dmhs-write-test", s->output_dir));
+    FILE *f = fopen(probe, "w");
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir %s: not writable (%s)",
+               s->output_dir, strerror(errno));
+    fclose(f);
+    unlink(probe);
+  }
+  PetscCallMPI(MPI_Barrier(s->comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_compute_forces(sim *s) {
+  PetscFunctionBeginUser;
+  if (s->ts.subcycling) {
+    PetscCall(substep_compute_forces(s)); /* the solids' own share kept apart */
+    PetscFunctionReturn(0);
+  }
+  PetscCall(sim_compute_module_forces(s, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode sim_view(sim *s) {
+  PetscViewer v = PETSC_VIEWER_STDOUT_(s->comm);
+  PetscInt n_local[PTYPE_COUNT], n[PTYPE_COUNT];
+  PetscFunctionBeginUser;
+  for (int t = 0; t < PTYPE_COUNT; t++)
+    n_local[t] = particles_count_type(&s->ps, (particle_type)t);
+  PetscCallMPI(MPI_Allreduce(n_local, n, PTYPE_COUNT, MPIU_INT, MPI_SUM, s->comm));
+  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s: scene %s on %d rank(s)\n", DMHS_VERSION,
+                                   s->scn->name, (int)s->size));
+  PetscCall(PetscViewerASCIIPrintf(v,
+                                   "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT
+                                   " wall, %" PetscInt_FMT " solid; rest spacing dx = %g m\n",
+                                   n[PTYPE_FLUID], n[PTYPE_WALL], n[PTYPE_SOLID], s->dx));
+  PetscCall(PetscViewerASCIIPrintf(
+      v, "box: [%g, %g] x [%g, %g] m, periodic x: %s, y: %s; ghost width %g m\n", s->dom.lo[0],
+      s->dom.hi[0], s->dom.lo[1], s->dom.hi[1], s->dom.periodic[0] ? "yes" : "no",
+      s->dom.periodic[1] ? "yes" : "no", s->hal.width));
+  PetscCall(PetscViewerASCIIPrintf(v, "run: t_end = %g s, output every %g s to %s/\n", s->t_end,
+                                   s->output_interval, s->output_dir));
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->view)
+      PetscCall(s->modules[m]->view(s->modules[m], s, v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
+  sim *s;
+  char scene_name[64] = "poiseuille";
+  PetscBool help;
+  PetscFunctionBeginUser;
+  PetscCall(events_register());
+  PetscCall(registry_initialize());
+  PetscCall(PetscNew(&s));
+  *out = s;
+  s->comm = comm;
+  PetscCallMPI(MPI_Comm_rank(comm, &s->rank));
+  PetscCallMPI(MPI_Comm_size(comm, &s->size));
+  s->t_end = 1.0;
+  s->skin_ratio = 0.1;
+  s->preflight = PREFLIGHT_ERROR;
+  PetscCall(PetscStrncpy(s->output_dir, "output", sizeof(s->output_dir)));
+  PetscCall(particles_create(&s->ps));
+  PetscCall(cells_create(&s->cel));
+
+  PetscCall(PetscLogStagePush(events.stage_setup));
+  /* -help: main takes it off the command line; one in an options file is taken off here */
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  *help_only = help = help || *help_only;
+  PetscCall(PetscOptionsClearValue(NULL, "-help"));
+  PetscCall(sim_set_from_options(s, scene_name, sizeof(scene_name)));
+  /* mpi: decomposition, migration check, halo check and final dump */
+  PetscCall(partition_set_from_options(&s->part, s));
+  PetscCall(migrate_set_from_options(&s->mig, s));
+  PetscCall(halo_check_set_from_options(s));
+  PetscCall(dump_set_from_options(s));
+  PetscCall(io_set_from_options(s)); /* io: snapshots, checkpoints, -restart */
+  if (help) {
+    PetscCall(registry_print_help(s, scene_name));
+    PetscCall(PetscLogStagePop());
+    PetscFunctionReturn(0);
+  }
+
+  /* scene options (they set module defaults and enable modules), then modules' own */
+  PetscCall(registry_create_scene(scene_name, &s->scn));
+  PetscCall(s->scn->set_from_options(s->scn, s));
+  for (int m = 0; m < s->n_modules; m++)
+    PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
+  PetscCall(sim_check_unused_options(s));
+
+  PetscCall(sim_prepare_output_dir(s));
+  PetscCall(io_setup(s)); /* io: run.json, signal handlers */
+  PetscCall(s->scn->build(s->scn, s));
+  double reach = 0;
+  for (int m = 0; m < s->n_modules; m++) {
+    reach = PetscMax(reach, s->modules[m]->reach);
+    if (s->modules[m]->needs & MODULE_NEEDS_PAIRS)
+      s->pair_cutoff = PetscMax(s->pair_cutoff, s->modules[m]->reach);
+  }
+  s->skin = s->skin_ratio * reach;
+  s->list_cutoff = s->pair_cutoff > 0 ? s->pair_cutoff + s->skin : 0;
+  PetscCall(domain_check_ghost_width(&s->dom, reach + s->skin));
+  PetscCall(halo_create(&s->hal, reach + s->skin, s->comm));
+  PetscCall(partition_setup(&s->part, s)); /* mpi: each rank keeps its share of the scene */
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->setup)
+      PetscCall(s->modules[m]->setup(s->modules[m], s));
+  /* no pair list when every module that wants neighbours walks the cells itself */
+  s->cel.no_pair_list = s->debug_halo ? PETSC_FALSE : PETSC_TRUE;
+  for (int m = 0; m < s->n_modules; m++)
+    if ((s->modules[m]->needs & MODULE_NEEDS_PAIRS) && !(s->modules[m]->needs & MODULE_CELLS_ONLY))
+      s->cel.no_pair_list = PETSC_FALSE;
+  PetscCall(neighbours_collect_ghost_reads(s));
+
+  PetscCall(sim_view(s));
+  PetscCall(timestep_stability_report(s));
+  s->next_output_t = s->output_interval;
+  s->next_progress_t = s->progress_interval;
+
+  /* forces at t = 0 for the first kick */
+  PetscCall(neighbours_update(s, PETSC_TRUE));
+  PetscCall(sim_compute_forces(s));
+  PetscCall(integrate_check_state(s));
+  PetscCall(io_restart(s)); /* io: with -restart, the checkpoint's state replaces the built one */
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_run(sim *s) {
+  PetscInt n_owned_global, n_local = s->ps.n_owned;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
+  PetscCall(PetscLogStagePush(events.stage_steps));
+  /* io: a restarted run already diagnosed and wrote out this state */
+  if (!s->io.restarted) {
+    PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
+    if (s->scn->diagnose)
+      PetscCall(s->scn->diagnose(s->scn, s));
+    PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+    PetscCall(io_output(s));
+  }
+  s->loop_start_wtime = MPI_Wtime();
+  /* stop at the step nearest t_end */
+  while (s->t < s->t_end - 0.5 * s->dt) {
+    PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
+    PetscCall(integrate_first_half(s));
+    if (s->ts.subcycling)
+      PetscCall(substep_solids(s)); /* the solids' sub-steps */
+    timestep_advance(s);
+    PetscCall(neighbours_update(s, s->force_rebuild));
+    s->force_rebuild = PETSC_FALSE;
+    PetscCall(sim_compute_forces(s));
+    PetscCall(integrate_second_half(s));
+    PetscCall(integrate_check_state(s));
+    for (int m = 0; m < s->n_modules; m++)
+      if (s->modules[m]->post_step)
+        PetscCall(s->modules[m]->post_step(s->modules[m], s));
+    s->particle_steps += n_owned_global;
+    PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
+    if (s->scn->diagnose)
+      PetscCall(s->scn->diagnose(s->scn, s));
+    PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+    if (s->t >= s->next_output_t - 0.5 * s->dt) {
+      PetscCall(io_output(s)); /* io: snapshot + XDMF */
+      s->next_output_t += s->output_interval;
+    }
+    if (s->t >= s->next_progress_t - 0.5 * s->dt) {
+      if (!s->quiet)
+        PetscCall(progress_print(s));
+      s->next_progress_t += s->progress_interval;
+    }
+    PetscBool stop; /* io: checkpoint at the interval; on SIGTERM/SIGUSR1 also stop */
+    PetscCall(io_after_step(s, &stop));
+    if (stop)
+      break;
+  }
+  s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
+  PetscCall(PetscLogStagePop());
+  if (s->scn->finish)
+    PetscCall(s->scn->finish(s->scn, s));
+  PetscCall(progress_summary(s));
+  PetscCall(dump_final(s));              /* mpi */
+  PetscCall(migrate_report(&s->mig, s)); /* mpi */
+  PetscCall(timestep_finish(s));
+  PetscCall(io_finish(s)); /* io: final checkpoint, run.json */
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode sim_destroy(sim **sp) {
+  sim *s = *sp;
+  PetscFunctionBeginUser;
+  if (!s)
+    PetscFunctionReturn(0);
+  for (int m = 0; m < s->n_modules; m++) {
+    if (s->modules[m]->destroy)
+      PetscCall(s->modules[m]->destroy(s->modules[m]));
+    PetscCall(PetscFree(s->modules[m]));
+  }
+  if (s->scn) {
+    if (s->scn->destroy)
+      PetscCall(s->scn->destroy(s->scn));
+    PetscCall(PetscFree(s->scn));
+  }
+  PetscCall(io_destroy(s));
+  PetscCall(topology_destroy(&s->topo)); /* solids */
+  PetscCall(halo_destroy(&s->hal));
+  PetscCall(partition_destroy(&s->part)); /* mpi */
+  PetscCall(cells_destroy(&s->cel));
+  PetscCall(particles_destroy(&s->ps));
+  PetscCall(registry_finalize());
+  options_forget();
+  PetscCall(PetscFree(*sp));
+  PetscFunctionReturn(0);
+}
