@@ -61,6 +61,11 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
                                    double rho, PetscInt *index);
 /* Copy every field row flagged by `flags` from row src to row dst. */
 void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flags);
+/* Takes owned row i out of the computation for good: a wall at rest (v, v_est, v_visc, a,
+ * drho zero; rho = rho_rest) at x_rest, which the caller picks more than a support away
+ * from every other particle (a slot of its own: it then enters no sum). The jump past the
+ * neighbour skin makes the next step rebuild, so no ghost keeps its old type. */
+void particles_retire(particles *ps, PetscInt i, const double x_rest[DMHS_DIM], double rho_rest);
 /* Number of owned particles of a type on this rank. */
 PetscInt particles_count_type(const particles *ps, particle_type type);
 

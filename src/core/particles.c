@@ -97,6 +97,20 @@ void particles_copy_row(particles *ps, PetscInt dst, PetscInt src, unsigned flag
   }
 }
 
+void particles_retire(particles *ps, PetscInt i, const double x_rest[DMHS_DIM], double rho_rest) {
+  ps->type[i] = PTYPE_WALL;
+  for (int d = 0; d < DMHS_DIM; d++) {
+    ps->x[i][d] = x_rest[d];
+    ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
+    if (ps->a_hold)
+      ps->a_hold[i][d] = 0;
+  }
+  ps->rho[i] = rho_rest;
+  ps->drho[i] = 0;
+  if (ps->drho_prev)
+    ps->drho_prev[i] = 0;
+}
+
 PetscInt particles_count_type(const particles *ps, particle_type type) {
   PetscInt n = 0;
   for (PetscInt i = 0; i < ps->n_owned; i++)

@@ -326,13 +326,9 @@ static PetscErrorCode intestine_park(intestine_data *c, sim *s) {
     const PetscInt64 g = ps->gid[i];
     PetscCheck(g >= 0 && g < c->n_fluid, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "intestine: fluid gid %" PetscInt64_FMT " out of range", g);
-    ps->type[i] = PTYPE_WALL;
-    ps->x[i][0] = c->lot_x0 + (double)(g / c->lot_rows) * c->lot_sp;
-    ps->x[i][1] = c->lot_y0 + (double)(g % c->lot_rows) * c->lot_sp;
-    for (int d = 0; d < 2; d++)
-      ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
-    ps->rho[i] = sp->rho0;
-    ps->drho[i] = 0;
+    const double slot[DMHS_DIM] = {c->lot_x0 + (double)(g / c->lot_rows) * c->lot_sp,
+                                   c->lot_y0 + (double)(g % c->lot_rows) * c->lot_sp};
+    particles_retire(ps, i, slot, sp->rho0);
   }
   PetscFunctionReturn(0);
 }

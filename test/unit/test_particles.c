@@ -12,6 +12,9 @@
  *     and partitioning do) leaves exactly the kept particles, whole;
  *   - particles_copy_row with FIELD_GHOST copies the ghost fields only;
  *   - particles_count_type counts owned rows only;
+ *   - particles_retire makes a row a wall at rest at the given place and
+ *     density (with the optional rows of -sph_density_predict zeroed), and
+ *     leaves gid, mass and the other rows alone;
  *   - pack / unpack of the FIELD_MIGRATE fields round-trips every field
  *     bitwise, adds the shift to x only, and packs exactly the sum of the
  *     row sizes per particle. */
@@ -285,6 +288,33 @@ static void test_pack_unpack(void **state) {
   OK(particles_destroy(&b));
 }
 
+static void test_retire(void **state) {
+  (void)state;
+  particles ps;
+  OK(fields_enable("drho_prev"));
+  OK(particles_create(&ps));
+  for (PetscInt k = 0; k < 3; k++)
+    add(&ps, 4 * k); /* three fluid particles */
+  for (PetscInt i = 0; i < 3; i++) {
+    ps.a[i][0] = ps.a[i][1] = 5.0;
+    ps.drho[i] = ps.drho_prev[i] = 7.0;
+  }
+  const double slot[2] = {3.5, -1.25};
+  const double m1 = ps.mass[1];
+  particles_retire(&ps, 1, slot, 998.0);
+  assert_int_equal(ps.type[1], PTYPE_WALL);
+  assert_true(ps.x[1][0] == 3.5 && ps.x[1][1] == -1.25);
+  for (int d = 0; d < 2; d++)
+    assert_true(ps.v[1][d] == 0 && ps.v_est[1][d] == 0 && ps.v_visc[1][d] == 0 && ps.a[1][d] == 0);
+  assert_true(ps.rho[1] == 998.0 && ps.drho[1] == 0 && ps.drho_prev[1] == 0);
+  assert_true(ps.mass[1] == m1 && ps.gid[1] == gid_of(4));
+  /* the others untouched */
+  assert_int_equal(ps.type[0], PTYPE_FLUID);
+  assert_int_equal(ps.type[2], PTYPE_FLUID);
+  assert_true(ps.a[0][0] == 5.0 && ps.drho[2] == 7.0 && ps.drho_prev[0] == 7.0);
+  OK(particles_destroy(&ps));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(test_add_and_grow, reset, reset),
@@ -294,6 +324,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_copy_row_by_flags, reset, reset),
       cmocka_unit_test_setup_teardown(test_count_type, reset, reset),
       cmocka_unit_test_setup_teardown(test_pack_unpack, reset, reset),
+      cmocka_unit_test_setup_teardown(test_retire, reset, reset),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }
