@@ -41,6 +41,24 @@ PetscErrorCode halo_build(halo *h, const domain *d, const partition *part, parti
  * (x gets its periodic shift again). Collective on several ranks. */
 PetscErrorCode halo_forward(halo *h, particles *ps, const char *const field_names[], int n_fields);
 
+/* Halo sizes at the last build, over the ranks (halo_stats.c; run.json's "halo"):
+ * what the cost of the ghosts and of their exchange scales with. Per rank:
+ * owned rows, ghost rows (periodic images included: they cost compute like
+ * any ghost), remote ghosts (received from other ranks: they cost the
+ * exchange), copies sent to other ranks, and partners (other ranks it sends
+ * to or receives from: the messages a neighbour-wise exchange would need). */
+typedef struct halo_count {
+  PetscInt64 min, max, total;
+} halo_count;
+typedef struct halo_stats {
+  PetscMPIInt ranks;
+  halo_count owned, ghost, remote, sent, partners;
+  halo_count forward_bytes; /* bytes a rank receives from other ranks per ghost refresh */
+  PetscInt64 ghost_bytes;   /* one packed ghost row: every FIELD_GHOST field */
+} halo_stats;
+/* Gathers st from the state of the last halo_build. Collective. */
+PetscErrorCode halo_stats_gather(const halo *h, const particles *ps, halo_stats *st);
+
 /* -debug_halo (halo_check.c): the pair list of every owned particle equals a
  * brute-force search over all ranks' particles. Collective. */
 struct sim;

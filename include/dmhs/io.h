@@ -3,10 +3,12 @@
  * -checkpoint_at_end, -restart) are read in one options pass; snapshots and
  * the XDMF index are written at every output time, checkpoints at an interval,
  * at the end and when SIGTERM / SIGUSR1 arrives; <output_dir>/run.json records
- * version, options, rank count, start/end time and the exit status. */
+ * version, options, rank count, start/end time, the exit status and, at the
+ * end, the halo's sizes over the ranks. */
 #ifndef DMHS_IO_H
 #define DMHS_IO_H
 #include <petscsys.h>
+#include "dmhs/halo.h"
 
 struct sim;
 struct xdmf;
@@ -31,6 +33,8 @@ typedef struct io_state {
   char start_time[32];           /* ISO 8601, UTC */
   char previous_status[32];      /* status in the run.json this run replaced ("" = none) */
   PetscBool run_json_started;
+  PetscBool halo_known; /* halo holds the sizes of the last build (the run reached its end) */
+  halo_stats halo;      /* run.json "halo" */
 } io_state;
 
 /* Options pass; also called for -help. Must run before the scene is built. */

@@ -10,7 +10,9 @@
  * options, restart_from, start, end (ISO 8601 UTC), status ("running",
  * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message,
  * previous_status (the status in the run.json this run replaced: "running"
- * there means that run was killed, or is still going). */
+ * there means that run was killed, or is still going) and, once the step
+ * loop has ended, halo (the sizes of the last neighbour build over the ranks:
+ * halo_stats.c). */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -123,6 +125,27 @@ static int io_replace_file(const char *path, const char *text) {
   return failed ? err : 0;
 }
 
+static void io_json_count(FILE *f, const char *name, const halo_count *c, int ranks, int last) {
+  fprintf(f, "    \"%s\": {\"min\": %lld, \"mean\": %.9g, \"max\": %lld, \"total\": %lld}%s\n",
+          name, (long long)c->min, (double)c->total / ranks, (long long)c->max, (long long)c->total,
+          last ? "" : ",");
+}
+
+/* Counts are integers; means are total / ranks. */
+static void io_json_halo(FILE *f, const halo_stats *h) {
+  /* one rank: the periodic images are copied row to row */
+  fprintf(f, ",\n  \"halo\": {\n    \"exchange\": \"%s\",\n",
+          h->ranks > 1 ? "MPI_Alltoallv" : "local copies");
+  fprintf(f, "    \"ghost_bytes\": %lld,\n", (long long)h->ghost_bytes);
+  io_json_count(f, "owned", &h->owned, h->ranks, 0);
+  io_json_count(f, "ghost", &h->ghost, h->ranks, 0);
+  io_json_count(f, "remote_ghost", &h->remote, h->ranks, 0);
+  io_json_count(f, "sent", &h->sent, h->ranks, 0);
+  io_json_count(f, "partners", &h->partners, h->ranks, 0);
+  io_json_count(f, "forward_bytes", &h->forward_bytes, h->ranks, 1);
+  fprintf(f, "  }");
+}
+
 /* Plain C (no PETSc calls): also used on the error path. Returns 0 or an errno. */
 static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
   char path[PETSC_MAX_PATH_LEN + 16], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
@@ -171,6 +194,8 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
     io_json_string(f, checkpoint);
   else
     fprintf(f, "null");
+  if (s->io.halo_known)
+    io_json_halo(f, &s->io.halo);
   if (message) {
     fprintf(f, ",\n  \"message\": ");
     io_json_string(f, message);
@@ -363,6 +388,8 @@ PetscErrorCode io_finish(sim *s) {
   PetscFunctionBeginUser;
   if (io->checkpoint_at_end && io->last_checkpoint_step != s->step)
     PetscCall(io_checkpoint(s));
+  PetscCall(halo_stats_gather(&s->hal, &s->ps, &io->halo));
+  io->halo_known = PETSC_TRUE;
   PetscCall(io_run_json(s, io->stop_signal ? "signal-checkpoint" : "completed", PETSC_TRUE));
   PetscFunctionReturn(0);
 }

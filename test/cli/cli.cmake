@@ -142,3 +142,8 @@ add_test(NAME cli_out_of_memory COMMAND ${DMHS_EXPECT_FAIL}
   -- bash -c "ulimit -v 1000000 && exec \"$0\" \"$@\"" ${DMHS_EXE} -scene box -box_nx 20000 -box_ny 20000
   -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/oom)
 set_tests_properties(cli_out_of_memory PROPERTIES LABELS cli TIMEOUT 60)
+# run.json's "halo" (halo sizes over the ranks at the last build): every count an integer, the
+# owned rows summing to the particles, the one-rank ghosts equal to the lattice's periodic images
+add_test(NAME cli_run_json_halo COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/run_json_halo.py
+  ${DMHS_CLI_OUT}/run_json_halo ${DMHS_MPIRUN} -- ${DMHS_EXE})
+set_tests_properties(cli_run_json_halo PROPERTIES LABELS "cli;mpi" PROCESSORS 2 TIMEOUT 120)
