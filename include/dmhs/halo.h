@@ -54,10 +54,12 @@ typedef struct halo_stats {
   PetscMPIInt ranks;
   halo_count owned, ghost, remote, sent, partners;
   halo_count forward_bytes; /* bytes a rank receives from other ranks per ghost refresh */
-  PetscInt64 ghost_bytes;   /* one packed ghost row: every FIELD_GHOST field */
+  PetscInt64 ghost_bytes;   /* one packed ghost row of a refresh: the fields it sends */
 } halo_stats;
-/* Gathers st from the state of the last halo_build. Collective. */
-PetscErrorCode halo_stats_gather(const halo *h, const particles *ps, halo_stats *st);
+/* Gathers st from the state of the last halo_build; refresh: the n fields a ghost refresh
+ * between builds sends (sim.ghost_step_fields). Collective. */
+PetscErrorCode halo_stats_gather(const halo *h, const particles *ps, const char *const *refresh,
+                                 int n, halo_stats *st);
 
 /* -debug_halo (halo_check.c): the pair list of every owned particle equals a
  * brute-force search over all ranks' particles. Collective. */

@@ -8,11 +8,19 @@
 
 enum { HS_OWNED, HS_GHOST, HS_REMOTE, HS_SENT, HS_PARTNERS, HS_BYTES, HS_N };
 
-PetscErrorCode halo_stats_gather(const halo *h, const particles *ps, halo_stats *st) {
+PetscErrorCode halo_stats_gather(const halo *h, const particles *ps, const char *const *refresh,
+                                 int n, halo_stats *st) {
   const field_desc *f[32];
-  const int nf = particles_select_fields(FIELD_GHOST, f, 32);
   PetscInt64 mine[HS_N], lo[HS_N], hi[HS_N], sum[HS_N];
   PetscFunctionBeginUser;
+  PetscCheck(n >= 0 && n <= 32, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+             "halo_stats_gather: %d refreshed fields", n);
+  for (int k = 0; k < n; k++) {
+    f[k] = fields_find(refresh[k]);
+    PetscCheck(f[k], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "halo_stats_gather: no field '%s'",
+               refresh[k]);
+  }
+  const int nf = n;
   PetscCall(PetscMemzero(st, sizeof(*st)));
   st->ranks = h->size;
   st->ghost_bytes = (PetscInt64)particles_packed_bytes(f, nf);

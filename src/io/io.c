@@ -388,7 +388,8 @@ PetscErrorCode io_finish(sim *s) {
   PetscFunctionBeginUser;
   if (io->checkpoint_at_end && io->last_checkpoint_step != s->step)
     PetscCall(io_checkpoint(s));
-  PetscCall(halo_stats_gather(&s->hal, &s->ps, &io->halo));
+  PetscCall(
+      halo_stats_gather(&s->hal, &s->ps, s->ghost_step_fields, s->n_ghost_step_fields, &io->halo));
   io->halo_known = PETSC_TRUE;
   PetscCall(io_run_json(s, io->stop_signal ? "signal-checkpoint" : "completed", PETSC_TRUE));
   PetscFunctionReturn(0);
