@@ -25,7 +25,7 @@ struct sim;
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
 /* 2: x_build (neighbour lists with a skin); 3: physics_options, per-dataset checksums;
  * 4: dt_anchor_t, dt_anchor_step, solid_substeps (dt and the sub-steps change during the run) */
-#define CHECKPOINT_FORMAT_VERSION 4
+#define CHECKPOINT_FORMAT_VERSION 5
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;

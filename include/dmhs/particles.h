@@ -24,13 +24,18 @@ typedef struct particles {
   PetscInt capacity; /* allocated rows of every field */
   PetscInt64 *gid;   /* global id, unique across ranks, stable for the whole run */
   PetscInt *type;    /* particle_type */
-  PetscInt *tag;     /* user tag (tracked sets); 0 = none */
-  double (*x)[DMHS_DIM];       /* position [m] */
-  double (*v)[DMHS_DIM];       /* velocity [m/s]; half-step value between the two kicks */
-  double (*v_est)[DMHS_DIM];   /* predicted velocity at the force evaluation [m/s] */
+  /* optional named marks, each enabled by who uses it (0 = none): */
+  PetscInt *load;            /* solid_load: 1 = carries a share of the point load */
+  PetscInt *segment;         /* peristalsis: 1 + the pocket whose membrane segment it belongs to */
+  PetscInt *tracer;          /* a scene's tracked set of liquid (the colon's white / red, the vein's
+                                sinus liquid) */
+  double (*x)[DMHS_DIM];     /* position [m] */
+  double (*v)[DMHS_DIM];     /* velocity [m/s]; half-step value between the two kicks */
+  double (*v_est)[DMHS_DIM]; /* predicted velocity at the force evaluation [m/s] */
   double (*v_visc)[DMHS_DIM];  /* velocity seen by the viscous term (walls: extrapolated) [m/s] */
   double (*a)[DMHS_DIM];       /* acceleration [m/s^2] */
-  double (*x0)[DMHS_DIM];      /* initial position, for displacement diagnostics [m] */
+  double (*x0)[DMHS_DIM];      /* optional: initial position (peristalsis' and solid_load's
+                                  anchors, displacement diagnostics) [m] */
   double (*x_build)[DMHS_DIM]; /* position at the last neighbour-list build [m] */
   double *mass;                /* [kg] per unit depth */
   double *rho;                 /* density [kg/m^3] */

@@ -6,8 +6,9 @@
 #define DMHS_PERISTALSIS_H
 #include "dmhs/module.h"
 
-/* Solid particles of pocket k's membrane segment carry tag PERISTALSIS_TAG0 + k. */
-#define PERISTALSIS_TAG0 1000
+/* Solid particles of pocket k's membrane segment have segment = PERISTALSIS_SEGMENT0 + k
+ * (the segment field exists with this module; 0 = none). */
+#define PERISTALSIS_SEGMENT0 1
 
 PetscErrorCode peristalsis_module_create(module **m);
 /* Scene geometry: n_pockets (N + 1) pockets of length b [m], pocket k spanning

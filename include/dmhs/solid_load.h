@@ -1,12 +1,12 @@
 /* Module solid_load: what the outside does to a solid in the validation
- * scenes: a point load F [N] shared equally by the particles tagged
- * SOLID_LOAD_TAG (e.g. a cantilever's tip), and viscous damping -gamma v on
- * solid particles (to reach a static state; LAMMPS fix viscous). */
+ * scenes: a point load F [N] shared equally by the particles whose load field
+ * is SOLID_LOAD_MARK (e.g. a cantilever's tip; the field exists with this module), and viscous
+ * damping -gamma v on solid particles (to reach a static state; LAMMPS fix viscous). */
 #ifndef DMHS_SOLID_LOAD_H
 #define DMHS_SOLID_LOAD_H
 #include "dmhs/module.h"
 
-#define SOLID_LOAD_TAG 1
+#define SOLID_LOAD_MARK 1
 
 PetscErrorCode solid_load_module_create(module **m);
 /* Scene defaults: load Fx, Fy [N] (total per unit depth), damping gamma [1/s]. */

@@ -12,10 +12,10 @@
 /* Pocket of position x: floor((x - x_left)/b) clipped to [0, n_pockets];
  * n_pockets (= N + 1) is the overflow. */
 PetscInt tracking_pocket(double x, PetscInt n_pockets, double b, double x_left);
-/* Over all ranks, for fluid or parked particles with tag `tag` (type ignored):
+/* Over all ranks, for fluid or parked particles whose tracer field is `tracer` (type ignored):
  * counts[0 .. n_pockets] per pocket (the last is the overflow), the total n
  * and the mean x. Collective. */
-PetscErrorCode tracking_count(sim *s, PetscInt tag, PetscInt n_pockets, double b, double x_left,
+PetscErrorCode tracking_count(sim *s, PetscInt tracer, PetscInt n_pockets, double b, double x_left,
                               PetscInt64 counts[], PetscInt64 *n, double *mean_x);
 /* Mean over all ranks of (x - x0)[d] of owned particles for which sel(i) is
  * true, exact in fixed point; *n = 0 and *mean = 0 when none. Collective. */

@@ -10,7 +10,7 @@
 struct checkpoint_io;
 
 /* Fluid that starts in the sinus (between a leaflet and the sinus wall). */
-#define VEIN_TAG_SINUS 1
+#define VEIN_TRACER_SINUS 1
 
 typedef struct vein_leaflet {
   PetscInt64 first_gid; /* column c, layer l: first_gid + 2c + l; column 0 is the clamp */

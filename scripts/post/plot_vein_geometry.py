@@ -5,7 +5,7 @@
 
 Reads the first snapshot OUTDIR/snap_*.h5, OUTDIR/vein.csv (its comment line)
 and OUTDIR/vein-summary.csv. Draws the liquid (light blue; the liquid that
-started in the sinus, tag 1, in orange), walls grey and leaflets black, with
+started in the sinus, tracer 1, in orange), walls grey and leaflets black, with
 the channel width W, sinus diameter D and length, the leaflet length L and
 root angle, and the tips' rest gap. W, the root and the angle come from the
 particles (the clamped root column sits at (x_root, +-W/2)); D and the sinus
@@ -59,10 +59,10 @@ def dim(ax, p, q, text, offset=(0, 0), at=0.5, **kw):
 def draw(ax, d, s):
     fluid, wall, leaflet = vc.masks(d)
     x = d["x"] * 1e3
-    sinus = fluid & (d["tag"] == 1)
+    sinus = fluid & (d["tracer"] == 1)
     ax.scatter(x[wall, 0], x[wall, 1], s=s, c="0.6", marker="s", linewidths=0, label="wall")
     ax.scatter(x[fluid & ~sinus, 0], x[fluid & ~sinus, 1], s=s, c=BLUE, linewidths=0, label="liquid")
-    ax.scatter(x[sinus, 0], x[sinus, 1], s=s, c=ORANGE, linewidths=0, label="sinus liquid (tag 1)")
+    ax.scatter(x[sinus, 0], x[sinus, 1], s=s, c=ORANGE, linewidths=0, label="sinus liquid (tracer 1)")
     free = leaflet & (d["type"] == vc.SOLID)
     ax.scatter(x[free, 0], x[free, 1], s=s, c="k", linewidths=0, zorder=3, label="leaflet")
     clamp = leaflet & ~free
@@ -80,7 +80,7 @@ def main():
     _, info = vc.read_csv(os.path.join(args.outdir, "vein.csv"), need=("t",))
     sm = vc.read_summary(os.path.join(args.outdir, "vein-summary.csv"), need=("leaflet_length", "gap_rest", "dx"))
     t0, snap = vc.snapshots(args.outdir)[0]
-    d = vc.read_snapshot(snap, ["x", "type", "body", "tag", "bonds"])
+    d = vc.read_snapshot(snap, ["x", "type", "body", "tracer", "bonds"])
     fluid, wall, leaflet = vc.masks(d)
     x = d["x"] * 1e3
     dx = sm["dx"] * 1e3
@@ -137,7 +137,7 @@ def main():
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
     ax.legend(loc="lower left", fontsize=8, ncol=5, markerscale=2, bbox_to_anchor=(0, 1.0), frameon=False)
-    ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d['tag'] == 1)).sum()} in the sinus), "
+    ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d["tracer"] == 1)).sum()} in the sinus), "
                  f"{wall.sum()} wall, {leaflet.sum()} leaflet particles", fontsize=10, pad=22)
     zx, zy = (root[0] - 3, root[0] + 5), (root[1] - 2.5, root[1] + 3.2)
     ax.add_patch(plt.Rectangle((zx[0], zy[0]), zx[1] - zx[0], zy[1] - zy[0], fill=False, ls="--", lw=0.8))

@@ -19,7 +19,6 @@
 static const field_desc table[] = {
     ROW(gid, 1, FIELD_INT64, ALL | FIELD_FIXED, "1"),
     ROW(type, 1, FIELD_INT, ALL | FIELD_FIXED, "1"),
-    ROW(tag, 1, FIELD_INT, ALL | FIELD_FIXED, "1"),
     ROW(x, DMHS_DIM, FIELD_REAL, ALL, "m"),
     ROW(v, DMHS_DIM, FIELD_REAL, ALL, "m/s"),
     /* v_est is derived (v + dt a) in the first half step: not checkpointed. */
@@ -28,7 +27,9 @@ static const field_desc table[] = {
     ROW(v_visc, DMHS_DIM, FIELD_REAL, FIELD_GHOST, "m/s"),
     /* a and drho are needed by the first kick after a restart. */
     ROW(a, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "m/s^2"),
-    ROW(x0, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "m"),
+    /* optional: the initial position, for those who anchor to it or measure from it */
+    ROW(x0, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL,
+        "m"),
     /* positions at the last neighbour build: decide the next rebuild, and let a
      * restart rebuild the very same ghosts and pairs (bitwise restart) */
     ROW(x_build, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT, "m"),
@@ -64,6 +65,15 @@ static const field_desc table[] = {
     /* optional (-sph_density_predict): the step's first density rate, set in the
      * first half step and used in the second; a step never spans a checkpoint */
     ROW(drho_prev, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_OPTIONAL, "kg/m^3/s"),
+    /* optional named marks (one per use, each enabled by its user; 0 = none): solid_load's
+     * loaded particles, peristalsis' membrane segments (1 + pocket), a scene's tracked
+     * liquid; set when the scene is built, never read on ghosts */
+    ROW(load, 1, FIELD_INT,
+        FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL | FIELD_FIXED, "1"),
+    ROW(segment, 1, FIELD_INT,
+        FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL | FIELD_FIXED, "1"),
+    ROW(tracer, 1, FIELD_INT,
+        FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL | FIELD_FIXED, "1"),
 };
 
 #define N_ROWS (sizeof(table) / sizeof(table[0]))

@@ -66,10 +66,16 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
   PetscInt i = ps->n_owned++;
   ps->gid[i] = gid;
   ps->type[i] = type;
-  ps->tag[i] = 0;
+  if (ps->load)
+    ps->load[i] = 0;
+  if (ps->segment)
+    ps->segment[i] = 0;
+  if (ps->tracer)
+    ps->tracer[i] = 0;
   for (int k = 0; k < DMHS_DIM; k++) {
     ps->x[i][k] = x[k];
-    ps->x0[i][k] = x[k];
+    if (ps->x0)
+      ps->x0[i][k] = x[k];
     ps->x_build[i][k] = x[k];
     ps->v[i][k] = v[k];
     ps->v_est[i][k] = v[k];

@@ -21,6 +21,7 @@ PetscErrorCode stress_enable(void) {
   PetscFunctionBeginUser;
   for (size_t k = 0; k < sizeof(stress_fields) / sizeof(stress_fields[0]); k++)
     PetscCall(fields_enable(stress_fields[k]));
+  PetscCall(fields_enable("x0")); /* the displacement field */
   PetscFunctionReturn(0);
 }
 

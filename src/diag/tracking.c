@@ -20,14 +20,14 @@ static inline PetscInt64 tracking_fixed(double x) {
   return (PetscInt64)llround(x / TRACKING_FIXED);
 }
 
-PetscErrorCode tracking_count(sim *s, PetscInt tag, PetscInt n_pockets, double b, double x_left,
+PetscErrorCode tracking_count(sim *s, PetscInt tracer, PetscInt n_pockets, double b, double x_left,
                               PetscInt64 counts[], PetscInt64 *n, double *mean_x) {
   const particles *ps = &s->ps;
   PetscInt64 *buf;
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(n_pockets + 3, &buf));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->tag[i] != tag)
+    if (ps->tracer[i] != tracer)
       continue;
     buf[tracking_pocket(ps->x[i][0], n_pockets, b, x_left)]++;
     buf[n_pockets + 1]++;

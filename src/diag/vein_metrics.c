@@ -252,7 +252,7 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
   } mine = {-1.0, 0}, all;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS)
+    if (ps->type[i] != PTYPE_FLUID || ps->tracer[i] != VEIN_TRACER_SINUS)
       continue;
     if (ps->stress_mag[i] < mine.value)
       continue;
@@ -314,7 +314,7 @@ static PetscErrorCode vein_write_sinus(vein_metrics *v, sim *s, PetscInt cycle) 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(4 * (size_t)ps->n_owned + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID || ps->tag[i] != VEIN_TAG_SINUS)
+    if (ps->type[i] != PTYPE_FLUID || ps->tracer[i] != VEIN_TRACER_SINUS)
       continue;
     mine[n_mine++] = (double)ps->gid[i];
     mine[n_mine++] = ps->x[i][0];

@@ -5,7 +5,7 @@
  * r = floor((t - t_d)/t_w) mod R of a wave of R rows (R = 2N + 5 generated,
  * or the rows of -peristalsis_schedule FILE). The schedule S[r][k] in
  * {-1, 0, +1} (generated: -1 for r = 2k-1, +1 for r = 2k+1 .. 2k+H, mod R)
- * pushes every solid particle i of pocket k's segment (tag PERISTALSIS_TAG0 + k)
+ * pushes every solid particle i of pocket k's segment (segment PERISTALSIS_SEGMENT0 + k)
  *   a_i += S[r][k] F w(x0_i) / m_i  (along +y),  w = sin^2(pi (x0 - x_k)/b),
  * a smooth bump that vanishes at the folds between pockets, so neighbouring
  * segments pushed opposite ways do not tear the bonds at the fold.
@@ -24,6 +24,7 @@
 #include <string.h>
 #include <ctype.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
@@ -117,6 +118,8 @@ PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscI
 static PetscErrorCode peristalsis_set_from_options(module *self, sim *s) {
   peri_data *d = self->data;
   PetscFunctionBeginUser;
+  PetscCall(fields_enable("segment")); /* which pocket's wave moves a membrane particle */
+  PetscCall(fields_enable("x0"));      /* the supports' anchors */
   PetscOptionsBegin(s->comm, NULL, "Peristaltic wave on the membrane segments (module peristalsis)",
                     NULL);
   PetscCall(PetscOptionsReal("-peristalsis_tw", "Sub-period t_w [s]; wave period T_w = (2N+5) t_w",
@@ -243,8 +246,8 @@ static PetscErrorCode peristalsis_setup(module *self, sim *s) {
         d->S[r * d->n_pockets + k] = (signed char)peristalsis_spec_value(d->n_pockets, d->H, r, k);
   }
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    local += s->ps.type[i] == PTYPE_SOLID && s->ps.tag[i] >= PERISTALSIS_TAG0 &&
-             s->ps.tag[i] < PERISTALSIS_TAG0 + d->n_pockets;
+    local += s->ps.type[i] == PTYPE_SOLID && s->ps.segment[i] >= PERISTALSIS_SEGMENT0 &&
+             s->ps.segment[i] < PERISTALSIS_SEGMENT0 + d->n_pockets;
   PetscCallMPI(MPI_Allreduce(&local, &d->n_seg, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }
@@ -266,7 +269,7 @@ static PetscErrorCode peristalsis_compute(module *self, sim *s) {
     const double im = 1.0 / ps->mass[i];
     ps->a[i][0] -= ks * (ps->x[i][0] - ps->x0[i][0]) * im + g * ps->v_est[i][0];
     ps->a[i][1] -= ks * (ps->x[i][1] - ps->x0[i][1]) * im + g * ps->v_est[i][1];
-    const PetscInt k = ps->tag[i] - PERISTALSIS_TAG0;
+    const PetscInt k = ps->segment[i] - PERISTALSIS_SEGMENT0;
     if (k < 0 || k >= np || amp[k] == 0)
       continue;
     const double sn = sin(M_PI * (ps->x0[i][0] - xl - k * d->b) * inv_b);

@@ -1,11 +1,12 @@
 /* Module solid_load: a point load and viscous damping on solid particles.
- *   a_i += F / (n_tagged m_i)     for particles with tag SOLID_LOAD_TAG
+ *   a_i += F / (n_tagged m_i)     for particles with load = SOLID_LOAD_MARK
  *   a_i -= gamma v_est_i          for solid particles (v_est: the predicted
  *                                 velocity at the force evaluation)
  * Options -solid_load_force Fx,Fy [N], -solid_damping gamma [1/s]. The load's
  * potential energy -F . (x - x0) summed over tagged particles is its energy. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/solid_load.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
@@ -45,9 +46,11 @@ static PetscErrorCode solid_load_set_from_options(module *self, sim *s) {
   PetscInt n = DMHS_DIM;
   PetscBool set;
   PetscFunctionBeginUser;
+  PetscCall(fields_enable("load")); /* which particles carry the load */
+  PetscCall(fields_enable("x0"));   /* the load's work, from the initial positions */
   PetscOptionsBegin(s->comm, NULL, "Point load and damping on solids (module solid_load)", NULL);
   PetscCall(PetscOptionsRealArray("-solid_load_force",
-                                  "Point load Fx,Fy [N] shared by the tagged particles (tip)", NULL,
+                                  "Point load Fx,Fy [N] shared by the marked particles (tip)", NULL,
                                   d->F, &n, &set));
   PetscCall(PetscOptionsReal("-solid_damping",
                              "Viscous damping rate gamma [1/s] on solid particles (a -= gamma v)",
@@ -65,10 +68,10 @@ static PetscErrorCode solid_load_setup(module *self, sim *s) {
   PetscInt local = 0;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    local += s->ps.tag[i] == SOLID_LOAD_TAG;
+    local += s->ps.load[i] == SOLID_LOAD_MARK;
   PetscCallMPI(MPI_Allreduce(&local, &d->n_tagged, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCheck(d->n_tagged > 0 || (d->F[0] == 0 && d->F[1] == 0), s->comm, PETSC_ERR_ARG_WRONG,
-             "-solid_load_force given but the scene tags no particle to carry it");
+             "-solid_load_force given but the scene marks no particle to carry it");
   PetscFunctionReturn(0);
 }
 
@@ -85,7 +88,7 @@ static PetscErrorCode solid_load_compute(module *self, sim *s) {
       continue;
     ps->a[i][0] -= g * ps->v_est[i][0];
     ps->a[i][1] -= g * ps->v_est[i][1];
-    if (ps->tag[i] == SOLID_LOAD_TAG) {
+    if (ps->load[i] == SOLID_LOAD_MARK) {
       ps->a[i][0] += share[0] / ps->mass[i];
       ps->a[i][1] += share[1] / ps->mass[i];
     }
@@ -101,7 +104,7 @@ static PetscErrorCode solid_load_energy(module *self, sim *s, double *e) {
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    if (ps->type[i] == PTYPE_SOLID && ps->tag[i] == SOLID_LOAD_TAG)
+    if (ps->type[i] == PTYPE_SOLID && ps->load[i] == SOLID_LOAD_MARK)
       local -= (d->F[0] * (ps->x[i][0] - ps->x0[i][0]) + d->F[1] * (ps->x[i][1] - ps->x0[i][1])) /
                d->n_tagged;
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));

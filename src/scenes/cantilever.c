@@ -15,6 +15,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
@@ -53,6 +54,7 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   PetscCheck(c->st.n >= c->st.n_clamp + 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-cantilever_n must be >= -cantilever_clamp + 2 (got %" PetscInt_FMT ")", c->st.n);
   PetscCheck(c->st.mass > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-cantilever_mass must be > 0");
+  PetscCall(fields_enable("x0")); /* the tip's deflection */
   PetscCall(topology_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, CANTILEVER_K, CANTILEVER_R0, 0.5 * CANTILEVER_R0));
   PetscCall(angle_set_default(s, CANTILEVER_KA, 90.0));
@@ -136,7 +138,7 @@ static PetscErrorCode cantilever_tip(sim *s, double d[2]) {
   double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++)
-    if (ps->tag[i] == SOLID_LOAD_TAG) {
+    if (ps->load[i] == SOLID_LOAD_MARK) {
       local[0] += ps->x[i][0] - ps->x0[i][0];
       local[1] += ps->x[i][1] - ps->x0[i][1];
       local[2] += 1;

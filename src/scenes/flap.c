@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/modules.h"
 #include "dmhs/gather.h"
 #include "dmhs/scenes.h"
@@ -81,6 +82,7 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
    * behind the tip and the density varied 20 %). c0 = 1 m/s gives B = 143 Pa,
    * density variations ~1 %, and costs nothing: dt is set by the bonds. */
   module *sph;
+  PetscCall(fields_enable("x0")); /* the flap's particle CSV: displacements */
   PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
   sp->kernel = SPH_KERNEL_LUCY;

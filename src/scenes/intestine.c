@@ -18,8 +18,8 @@
  *     pocket N + 1; beyond the weir it is parked (turned into a fixed,
  *     isolated particle in a parking lot right of the channel, one slot per
  *     fluid gid), never lost: "overflow" in the CSV and the final report.
- * Tracked sets: the liquid initially in pocket 0 ("white", tag 1) and, with
- * -intestine_red, in pocket -intestine_red_pocket ("red", tag 2).
+ * Tracked sets: the liquid initially in pocket 0 ("white", tracer 1) and, with
+ * -intestine_red, in pocket -intestine_red_pocket ("red", tracer 2).
  *
  * Diagnostics, <output_dir>/intestine.csv every output interval:
  *   t, sub (sub-period, -1 = no wave), x_F [m] (mean x of white),
@@ -37,6 +37,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/fields.h"
 #include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 #include "dmhs/bond.h"
@@ -50,8 +51,8 @@
 #include "dmhs/liquid_state.h"
 #include "dmhs/membrane_leak.h"
 
-#define TAG_WHITE 1
-#define TAG_RED   2
+#define TRACER_WHITE 1
+#define TRACER_RED   2
 
 typedef struct {
   PetscInt n_pockets; /* N + 1 */
@@ -143,6 +144,8 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
   if (!set)
     s->dt = 0.0;
+  PetscCall(fields_enable("tracer")); /* the white (and red) liquid */
+  PetscCall(fields_enable("x0"));     /* tracking's displacements, the segments' centres */
   PetscCall(modules_enable(s, "body_force", &c->body));
   PetscCall(body_force_set_default_gravity(c->body, 9.81));
   /* the published membrane is nonlinear (FENE-like) */
@@ -220,9 +223,9 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, rho, &idx));
       const PetscInt k = tracking_pocket(x[0], c->n_pockets, c->b, 0.0);
       if (k == 0)
-        s->ps.tag[idx] = TAG_WHITE;
+        s->ps.tracer[idx] = TRACER_WHITE;
       else if (c->red && k == c->red_pocket)
-        s->ps.tag[idx] = TAG_RED;
+        s->ps.tracer[idx] = TRACER_RED;
     }
   c->n_fluid = gid;
   /* the parking lot must fit in x: widen the domain */
@@ -275,7 +278,7 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
       PetscCall(particles_add_owned(&s->ps, gid++, fixed ? PTYPE_WALL : PTYPE_SOLID, p, zero, m,
                                     sp->rho0, &idx));
       if (!fixed)
-        s->ps.tag[idx] = PERISTALSIS_TAG0 + (PetscInt)PetscMin(k, c->n_pockets - 1);
+        s->ps.segment[idx] = PERISTALSIS_SEGMENT0 + (PetscInt)PetscMin(k, c->n_pockets - 1);
     }
   }
   PetscCall(PetscFree(cx));
@@ -340,7 +343,7 @@ typedef struct {
 
 static PetscBool intestine_segment_centre(const sim *s, PetscInt i, void *ctx) {
   const seg_sel *q = ctx;
-  if (s->ps.type[i] != PTYPE_SOLID || s->ps.tag[i] != PERISTALSIS_TAG0 + q->k)
+  if (s->ps.type[i] != PTYPE_SOLID || s->ps.segment[i] != PERISTALSIS_SEGMENT0 + q->k)
     return PETSC_FALSE;
   return fabs(s->ps.x0[i][0] - (q->k + 0.5) * q->c->b) < q->c->b / 6 ? PETSC_TRUE : PETSC_FALSE;
 }
@@ -407,9 +410,9 @@ static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
   if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
     PetscFunctionReturn(0);
   PetscCall(PetscCalloc2(np + 1, &cw, np + 1, &cr));
-  PetscCall(tracking_count(s, TAG_WHITE, np, c->b, 0.0, cw, &nw, &xw));
+  PetscCall(tracking_count(s, TRACER_WHITE, np, c->b, 0.0, cw, &nw, &xw));
   if (c->red)
-    PetscCall(tracking_count(s, TAG_RED, np, c->b, 0.0, cr, &nr, &xr));
+    PetscCall(tracking_count(s, TRACER_RED, np, c->b, 0.0, cr, &nr, &xr));
   PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
   double rho_dev, mach;
   PetscInt64 inside, through;

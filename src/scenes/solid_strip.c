@@ -21,8 +21,8 @@ PetscErrorCode solid_strip_build(sim *s, solid_strip *st, PetscInt64 *next_gid) 
       PetscCall(particles_add_owned(&s->ps, (*next_gid)++,
                                     c < st->n_clamp ? PTYPE_WALL : PTYPE_SOLID, x, zero, st->mass,
                                     st->rho, &i));
-      if (c == st->n - 1)
-        s->ps.tag[i] = SOLID_LOAD_TAG;
+      if (c == st->n - 1 && s->ps.load) /* with solid_load: the tip carries the load */
+        s->ps.load[i] = SOLID_LOAD_MARK;
     }
 #define G(c, l) (st->first_gid + 2 * (c) + (l))
   for (PetscInt c = 0; c < st->n; c++) {

@@ -17,9 +17,9 @@ typedef struct solid_strip {
       first_gid; /* gids first_gid .. first_gid + 2n - 1: column c layer l = first_gid + 2c + l */
 } solid_strip;
 
-/* Adds the particles (clamped columns as PTYPE_WALL, the last column tagged
- * SOLID_LOAD_TAG), bonds along both layers and across every column, and the
- * four right angles of every cell (theta0 = pi/2) to s->topo. Bonds and angles
+/* Adds the particles (clamped columns as PTYPE_WALL, the last column marked
+ * SOLID_LOAD_MARK in the load field, with solid_load), bonds along both layers and across every
+ * column, and the four right angles of every cell (theta0 = pi/2) to s->topo. Bonds and angles
  * between clamped particles only are left out. */
 PetscErrorCode solid_strip_build(sim *s, solid_strip *st, PetscInt64 *next_gid);
 /* Timoshenko constants of the strip: layer bond stiffness k_s = U''(r0) [N/m],

@@ -74,7 +74,8 @@ static PetscErrorCode vein_extreme_sinus(sim *s, const double *value, int sign, 
   } mine = {-INFINITY, -1}, *all;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    if (s->ps.type[i] != PTYPE_FLUID || s->ps.tag[i] != VEIN_TAG_SINUS || s->ps.gid[i] == skip)
+    if (s->ps.type[i] != PTYPE_FLUID || s->ps.tracer[i] != VEIN_TRACER_SINUS ||
+        s->ps.gid[i] == skip)
       continue;
     const double w = sign * value[i];
     if (w > mine.v || (w == mine.v && s->ps.gid[i] < mine.gid)) {
@@ -227,6 +228,7 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   sp->av_alpha = 0.01;
   PetscCall(fields_enable("body"));
   PetscCall(fields_enable("side"));
+  PetscCall(fields_enable("tracer")); /* the liquid that starts in the sinus */
   PetscCall(stress_enable());
   PetscCall(modules_enable(s, "body_force", &v->body));
   PetscCall(body_force_set_default(v->body, 0.1, 0.0));
@@ -416,7 +418,7 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
           const double y_leaf =
               x[0] < x_tip ? 0.5 * v->width - (x[0] - x_root) * tan(theta) : 0.5 * v->width;
           if (ay > y_leaf) {
-            s->ps.tag[idx] = VEIN_TAG_SINUS;
+            s->ps.tracer[idx] = VEIN_TRACER_SINUS;
             n_sinus++;
           }
         }
@@ -429,8 +431,6 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
     PetscCall(solid_strip_build(s, &st[k], &gid));
     for (PetscInt i = first; i < s->ps.n_owned; i++) {
       s->ps.body[i] = k + 1;
-      if (s->ps.tag[i] == SOLID_LOAD_TAG)
-        s->ps.tag[i] = 0; /* no point load here */
     }
     v->lay.leaflet[k].first_gid = st[k].first_gid;
     v->lay.leaflet[k].n_columns = st[k].n;

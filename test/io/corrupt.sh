@@ -72,8 +72,8 @@ with open(sys.argv[1], "r+b") as raw:
     raw.write(bytes([b[0] ^ 0x10]))
 PYEOF
 }
-cp "$GOOD" "$W/flipped.h5" && flip "$W/flipped.h5" particles/x0
-expect_fail flipped "checkpoint $W/flipped.h5 is corrupt: dataset /particles/x0 fails its checksum" \
+cp "$GOOD" "$W/flipped.h5" && flip "$W/flipped.h5" particles/v
+expect_fail flipped "checkpoint $W/flipped.h5 is corrupt: dataset /particles/v fails its checksum" \
   -output_dir "$W/o11" -restart "$W/flipped.h5"
 cp "$GOOD" "$W/flipped_state.h5" && flip "$W/flipped_state.h5" scene/errors_next_report
 expect_fail flipped_state "dataset /scene/errors_next_report fails its checksum" -output_dir "$W/o12" \

@@ -30,19 +30,17 @@ typedef struct {
 /* The always-present rows. v_est is derived in the first half step (not
  * checkpointed, not written); v_visc is rebuilt by the wall pass before every
  * force sweep (ghosts only); p is recomputed before use, so it is not
- * migrated; x_build is internal (not written); gid, type, tag, mass (and the
- * optional body) change only at a neighbour build (F: ghosts keep their build's
+ * migrated; x_build is internal (not written); gid, type, mass (and the
+ * optional body and marks) change only at a neighbour build (F: ghosts keep their build's
  * copy, no refresh between builds sends them). */
 static const expected_row base[] = {
     {"gid", 1, FIELD_INT64, M | G | C | O | F, offsetof(particles, gid)},
     {"type", 1, FIELD_INT, M | G | C | O | F, offsetof(particles, type)},
-    {"tag", 1, FIELD_INT, M | G | C | O | F, offsetof(particles, tag)},
     {"x", 2, FIELD_REAL, M | G | C | O, offsetof(particles, x)},
     {"v", 2, FIELD_REAL, M | G | C | O, offsetof(particles, v)},
     {"v_est", 2, FIELD_REAL, M | G, offsetof(particles, v_est)},
     {"v_visc", 2, FIELD_REAL, G, offsetof(particles, v_visc)},
     {"a", 2, FIELD_REAL, M | C | O, offsetof(particles, a)},
-    {"x0", 2, FIELD_REAL, M | C | O, offsetof(particles, x0)},
     {"x_build", 2, FIELD_REAL, M | C, offsetof(particles, x_build)},
     {"mass", 1, FIELD_REAL, M | G | C | O | F, offsetof(particles, mass)},
     {"rho", 1, FIELD_REAL, M | G | C | O, offsetof(particles, rho)},
@@ -126,6 +124,16 @@ static void test_optional_rows(void **state) {
   t = fields_table(&n);
   assert_int_equal(n, N_BASE + 3);
   assert_string_equal(t[N_BASE + 1].name, "shear_rate");
+  /* the optional initial position and named marks (load, segment, tracer) */
+  OK(fields_enable("x0"));
+  OK(fields_enable("tracer"));
+  assert_int_equal(fields_find("x0")->flags, M | C | O | FIELD_OPTIONAL);
+  assert_int_equal(fields_find("tracer")->flags, M | C | O | F | FIELD_OPTIONAL);
+  assert_int_equal(fields_find("tracer")->kind, FIELD_INT);
+  assert_null(fields_find("load"));
+  assert_null(fields_find("tag")); /* gone: one field per use */
+  t = fields_table(&n);
+  assert_int_equal(n, N_BASE + 5);
   fields_reset();
   t = fields_table(&n);
   assert_int_equal(n, N_BASE);

@@ -76,7 +76,7 @@ static void set_fields(PetscInt i) {
   ps->x_build[i][0] = 0.5 * k, ps->x_build[i][1] = 0.25 * k;
   ps->a_hold[i][0] = k, ps->a_hold[i][1] = k + 1;
   ps->drho[i] = -k;
-  ps->tag[i] = 1000 + (PetscInt)ps->gid[i];
+  ps->tracer[i] = 1000 + (PetscInt)ps->gid[i];
 }
 
 static void check_fields(PetscInt i, int phase) {
@@ -87,8 +87,8 @@ static void check_fields(PetscInt i, int phase) {
   x_of(phase, g, x);
   CHECK(ps->x[i][0] == x[0] && ps->x[i][1] == x[1], "gid %lld: x (%g, %g), expected (%g, %g)",
         (long long)g, ps->x[i][0], ps->x[i][1], x[0], x[1]);
-  CHECK(ps->type[i] == (PetscInt)(g % PTYPE_COUNT) && ps->tag[i] == 1000 + (PetscInt)g,
-        "gid %lld: type/tag", (long long)g);
+  CHECK(ps->type[i] == (PetscInt)(g % PTYPE_COUNT) && ps->tracer[i] == 1000 + (PetscInt)g,
+        "gid %lld: type/tracer", (long long)g);
   CHECK(ps->v[i][0] == k && ps->v[i][1] == -2 * k, "gid %lld: v", (long long)g);
   CHECK(ps->v_est[i][0] == k + 0.5 && ps->v_est[i][1] == 1.0, "gid %lld: v_est", (long long)g);
   CHECK(ps->a[i][0] == 3 * k && ps->a[i][1] == 7.0, "gid %lld: a", (long long)g);
@@ -158,6 +158,8 @@ static void test_partition_and_migrate(void **state) {
   s.hal.width = 0.125; /* 8 x 8 coarse cells */
   fields_reset();
   OK(fields_enable("a_hold"));
+  OK(fields_enable("x0"));
+  OK(fields_enable("tracer"));
   OK(particles_create(&s.ps));
   for (PetscInt64 k = 0; k < N; k++) {
     double x[2];

@@ -1,6 +1,6 @@
 /* The struct-of-arrays particle store (src/core/particles.c). Proves:
  *   - particles_add_owned appends rows with the given values and the derived
- *     ones (x0 = x_build = x, v_est = v_visc = v, a = drho = p = tag = 0), and
+ *     ones (x0 = x_build = x, v_est = v_visc = v, a = drho = p = tracer = 0), and
  *     returns the new row's index;
  *   - growing one particle at a time keeps every earlier row of every field,
  *     capacity stays >= the rows in use and grows geometrically (at most
@@ -23,9 +23,12 @@
 #include "dmhs/particles.h"
 #include "dmhs/fields.h"
 
+/* the optional rows these tests read too: the initial position and a named mark */
 static int reset(void **state) {
   (void)state;
   fields_reset();
+  OK(fields_enable("x0"));
+  OK(fields_enable("tracer"));
   return 0;
 }
 
@@ -64,7 +67,7 @@ static void check_row(const particles *ps, PetscInt i, PetscInt k) {
     fail_msg("row %d: gid %lld, expected %lld", (int)i, (long long)ps->gid[i],
              (long long)gid_of(k));
   assert_int_equal(ps->type[i], type_of(k));
-  assert_int_equal(ps->tag[i], 0);
+  assert_int_equal(ps->tracer[i], 0);
   for (int d = 0; d < 2; d++) {
     assert_true(ps->x[i][d] == x[d]);
     assert_true(ps->x0[i][d] == x[d]);
@@ -244,12 +247,12 @@ static void test_pack_unpack(void **state) {
     add(&a, k);
     a.a[k][0] = 0.5 * (double)k;
     a.drho[k] = -(double)k;
-    a.tag[k] = (PetscInt)(100 + k);
+    a.tracer[k] = (PetscInt)(100 + k);
     a.a_hold[k][1] = 3.0 + (double)k;
     a.p[k] = 1e5; /* not a migrate field */
   }
   const int nf = particles_select_fields(FIELD_MIGRATE, f, 32);
-  /* gid type tag x v v_est a x0 x_build mass rho drho a_hold */
+  /* gid type x v v_est a x0 x_build mass rho drho a_hold tracer */
   assert_int_equal(nf, 13);
   const size_t want =
       sizeof(PetscInt64) + 2 * sizeof(PetscInt) + (6 * 2 + 3) * sizeof(double) + 2 * sizeof(double);
@@ -257,7 +260,7 @@ static void test_pack_unpack(void **state) {
   /* a short output array: the first fields only */
   const field_desc *g[3];
   assert_int_equal(particles_select_fields(FIELD_MIGRATE, g, 3), 3);
-  assert_string_equal(g[2]->name, "tag");
+  assert_string_equal(g[2]->name, "x");
 
   const PetscInt rows[3] = {5, 0, 6};
   const double shift[3][2] = {{1.0, 0.0}, {0.0, -2.0}, {0.25, 0.5}};
@@ -268,7 +271,7 @@ static void test_pack_unpack(void **state) {
   particles_unpack(&b, f, nf, 2, 3, buf);
   for (PetscInt e = 0; e < 3; e++) {
     const PetscInt s = rows[e], d = 2 + e;
-    assert_true(b.gid[d] == a.gid[s] && b.type[d] == a.type[s] && b.tag[d] == a.tag[s]);
+    assert_true(b.gid[d] == a.gid[s] && b.type[d] == a.type[s] && b.tracer[d] == a.tracer[s]);
     for (int c = 0; c < 2; c++) {
       assert_true(b.x[d][c] == a.x[s][c] + shift[e][c]);
       assert_true(b.v[d][c] == a.v[s][c] && b.v_est[d][c] == a.v_est[s][c]);

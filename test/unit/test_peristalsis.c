@@ -11,7 +11,7 @@
  *     to the new one along 3u^2 - 2u^3, u = (fraction of t_w)/ramp;
  *   - the force on a segment particle: a_y += A F sin^2(pi (x0 - x_left - k b)/b)/m
  *     (full at the centre, half a quarter in, zero at the folds, by the initial
- *     position x0, not the current one), only on solids of tag 1000 + k;
+ *     position x0, not the current one), only on solids of segment PERISTALSIS_SEGMENT0 + k;
  *     the support -k_s (x - x0)/m - gamma v_est on every solid;
  *   - a schedule file is read as written ('#' comments, commas or blanks), and
  *     a value other than -1/0/1 or a short row is an error;
@@ -82,6 +82,8 @@ static int setup(void **state) {
   OK(PetscMemzero(&s, sizeof(s)));
   s.comm = PETSC_COMM_SELF;
   fields_reset();
+  OK(fields_enable("segment")); /* as the module's options pass does */
+  OK(fields_enable("x0"));
   OK(particles_create(&s.ps));
   OK(peristalsis_module_create(&m));
   OK(peristalsis_set_geometry(m, 3, b, x_left));
@@ -157,11 +159,11 @@ static void compute_at(double t) {
   OK(m->compute(m, &s));
 }
 
-static PetscInt add(particle_type type, PetscInt tag, double x0, double y0, double mass) {
+static PetscInt add(particle_type type, PetscInt segment, double x0, double y0, double mass) {
   const double x[2] = {x0, y0}, v[2] = {0, 0};
   PetscInt i;
   OK(particles_add_owned(&s.ps, s.ps.n_owned, type, x, v, mass, 1000.0, &i));
-  s.ps.tag[i] = tag;
+  s.ps.segment[i] = segment;
   return i;
 }
 
@@ -169,13 +171,13 @@ static void test_force_profile(void **state) {
   (void)state;
   const double mass = 2e-3;
   /* pocket 1 spans [x_left + b, x_left + 2b] */
-  const PetscInt centre = add(PTYPE_SOLID, PERISTALSIS_TAG0 + 1, x_left + 1.5 * b, 0.0, mass);
-  const PetscInt quarter = add(PTYPE_SOLID, PERISTALSIS_TAG0 + 1, x_left + 1.25 * b, 0.0, mass);
-  const PetscInt fold = add(PTYPE_SOLID, PERISTALSIS_TAG0 + 1, x_left + 2.0 * b, 0.0, mass);
-  const PetscInt p0 = add(PTYPE_SOLID, PERISTALSIS_TAG0 + 0, x_left + 0.5 * b, 0.0, mass);
-  const PetscInt fluid = add(PTYPE_FLUID, PERISTALSIS_TAG0 + 1, x_left + 1.5 * b, 0.0, mass);
+  const PetscInt centre = add(PTYPE_SOLID, PERISTALSIS_SEGMENT0 + 1, x_left + 1.5 * b, 0.0, mass);
+  const PetscInt quarter = add(PTYPE_SOLID, PERISTALSIS_SEGMENT0 + 1, x_left + 1.25 * b, 0.0, mass);
+  const PetscInt fold = add(PTYPE_SOLID, PERISTALSIS_SEGMENT0 + 1, x_left + 2.0 * b, 0.0, mass);
+  const PetscInt p0 = add(PTYPE_SOLID, PERISTALSIS_SEGMENT0 + 0, x_left + 0.5 * b, 0.0, mass);
+  const PetscInt fluid = add(PTYPE_FLUID, PERISTALSIS_SEGMENT0 + 1, x_left + 1.5 * b, 0.0, mass);
   const PetscInt untagged = add(PTYPE_SOLID, 0, x_left + 1.5 * b, 0.0, mass);
-  const PetscInt beyond = add(PTYPE_SOLID, PERISTALSIS_TAG0 + 3, x_left + 3.5 * b, 0.0, mass);
+  const PetscInt beyond = add(PTYPE_SOLID, PERISTALSIS_SEGMENT0 + 3, x_left + 3.5 * b, 0.0, mass);
   configure("-peristalsis_tw 0.1 -peristalsis_ramp 0 -peristalsis_force 0.5 "
             "-peristalsis_support 0 -peristalsis_damping 0");
   /* r = 3: pocket 1 +1, pocket 0 0 */
