@@ -48,6 +48,9 @@ struct sim;
 /* The sph module's parameters, for its scene to set defaults on before the options pass
  * (NULL when m is not the sph module). */
 sph_params *sph_defaults(module *m);
+/* The scene builds no wall particle: the viscous term reads v_est, and the v_visc field is
+ * not made (memory); building a wall after this is an error. Before the options pass. */
+PetscErrorCode sph_set_no_walls(module *m);
 /* The enabled sph module's parameters (after the options pass), NULL without SPH. */
 const sph_params *sph_params_get(const struct sim *s);
 

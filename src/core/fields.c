@@ -23,8 +23,9 @@ static const field_desc table[] = {
     ROW(v, DMHS_DIM, FIELD_REAL, ALL, "m/s"),
     /* v_est is derived (v + dt a) in the first half step: not checkpointed. */
     ROW(v_est, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_GHOST, "m/s"),
-    /* v_visc is rebuilt by the wall pass before every force sweep. */
-    ROW(v_visc, DMHS_DIM, FIELD_REAL, FIELD_GHOST, "m/s"),
+    /* v_visc is rebuilt by the wall pass before every force sweep; optional: without walls
+     * the viscous term reads v_est, and a scene that says so (sph_set_no_walls) has none */
+    ROW(v_visc, DMHS_DIM, FIELD_REAL, FIELD_GHOST | FIELD_OPTIONAL, "m/s"),
     /* a and drho are needed by the first kick after a restart. */
     ROW(a, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "m/s^2"),
     /* optional: the initial position, for those who anchor to it or measure from it */

@@ -79,7 +79,8 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
     ps->x_build[i][k] = x[k];
     ps->v[i][k] = v[k];
     ps->v_est[i][k] = v[k];
-    ps->v_visc[i][k] = v[k];
+    if (ps->v_visc)
+      ps->v_visc[i][k] = v[k];
     ps->a[i][k] = 0.0;
   }
   ps->mass[i] = mass;
@@ -107,7 +108,9 @@ void particles_retire(particles *ps, PetscInt i, const double x_rest[DMHS_DIM], 
   ps->type[i] = PTYPE_WALL;
   for (int d = 0; d < DMHS_DIM; d++) {
     ps->x[i][d] = x_rest[d];
-    ps->v[i][d] = ps->v_est[i][d] = ps->v_visc[i][d] = ps->a[i][d] = 0;
+    ps->v[i][d] = ps->v_est[i][d] = ps->a[i][d] = 0;
+    if (ps->v_visc)
+      ps->v_visc[i][d] = 0;
     if (ps->a_hold)
       ps->a_hold[i][d] = 0;
   }

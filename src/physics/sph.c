@@ -20,8 +20,9 @@ const char *const sph_sweep_names[] = {"auto",           "pairs",      "cells",
                                        "sph_sweep_kind", "SPH_SWEEP_", NULL};
 
 typedef struct {
-  sph_params params; /* the scene's defaults, then the options (sph_defaults, sph_params_get) */
-  module *body;      /* the body force module, NULL without one: the walls' hydrostatic part */
+  sph_params params;  /* the scene's defaults, then the options (sph_defaults, sph_params_get) */
+  module *body;       /* the body force module, NULL without one: the walls' hydrostatic part */
+  PetscBool no_walls; /* sph_set_no_walls: no v_visc field */
   sph_wall_work *wall;
   sph_force_work force;
   sph_correction_work correction;
@@ -30,6 +31,14 @@ typedef struct {
 
 sph_params *sph_defaults(module *sph) {
   return sph && !strcmp(sph->name, "sph") ? &((sph_data *)sph->data)->params : NULL;
+}
+
+PetscErrorCode sph_set_no_walls(module *m) {
+  PetscFunctionBeginUser;
+  PetscCheck(sph_defaults(m), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "sph_set_no_walls: module %s is not sph", m ? m->name : "(none)");
+  ((sph_data *)m->data)->no_walls = PETSC_TRUE;
+  PetscFunctionReturn(0);
 }
 
 const sph_params *sph_params_get(const sim *s) {
@@ -107,6 +116,8 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
              PETSC_ERR_ARG_INCOMP, "-sph_density_predict needs -sph_density continuity");
   if (sp->density_predict)
     PetscCall(fields_enable("drho_prev"));
+  if (!((sph_data *)self->data)->no_walls) /* the walls' velocity for the viscous term */
+    PetscCall(fields_enable("v_visc"));
   PetscCheck(sp->h > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_h must be > 0 (got %g)", sp->h);
   PetscCheck(sp->rho0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_rho0 must be > 0 (got %g)",
              sp->rho0);
@@ -133,6 +144,9 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_walls, 1, MPIU_INT, MPI_SUM, s->comm));
   d->has_walls = n_walls > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(!d->has_walls || !d->no_walls, s->comm, PETSC_ERR_PLIB,
+             "scene %s said it builds no walls (sph_set_no_walls) but built %" PetscInt_FMT,
+             s->scn->name, n_walls);
   d->body = sim_find_module(s, "body_force");
   PetscCheck(sp->wall != SPH_WALL_QUADRATIC || !d->has_walls || fields_enabled("to_surface"),
              s->comm, PETSC_ERR_ARG_INCOMP,
@@ -163,7 +177,7 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
     if (d->body)
       body_force_current(d->body, g);
     PetscCall(sph_wall_compute(s, sp, g, d->wall));
-  } else if (!(self->needs & MODULE_CELLS_ONLY)) /* else only the cells sweep reads it: v_est */
+  } else if (!(self->needs & MODULE_CELLS_ONLY) && s->ps.v_visc) /* else the sweeps read v_est */
     PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
   d->force.visc_is_est = d->has_walls ? PETSC_FALSE : PETSC_TRUE;
   if (sp->kernel_correction)

@@ -30,6 +30,7 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   module *sph;
   PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
+  PetscCall(sph_set_no_walls(sph)); /* a periodic box of liquid: no v_visc field */
   sp->kernel = SPH_KERNEL_LUCY;
   sp->h = 2.5 * b->dx;
   sp->rho0 = 1056.0;

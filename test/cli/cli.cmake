@@ -138,7 +138,7 @@ add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* E
 set_tests_properties(cli_eta_not_negative PROPERTIES LABELS cli TIMEOUT 60)
 # out of memory (a 1 GB address-space limit, 4e8 particles): says what and how much
 add_test(NAME cli_out_of_memory COMMAND ${DMHS_EXPECT_FAIL}
-  "out of memory: cannot allocate 3200 MB for particle field 'gid' \\(room for 400000000 particles.*140 bytes per particle"
+  "out of memory: cannot allocate 3200 MB for particle field 'gid' \\(room for 400000000 particles.*124 bytes per particle"
   -- bash -c "ulimit -v 1000000 && exec \"$0\" \"$@\"" ${DMHS_EXE} -scene box -box_nx 20000 -box_ny 20000
   -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/oom)
 set_tests_properties(cli_out_of_memory PROPERTIES LABELS cli TIMEOUT 60)

@@ -28,8 +28,8 @@ typedef struct {
 } expected_row;
 
 /* The always-present rows. v_est is derived in the first half step (not
- * checkpointed, not written); v_visc is rebuilt by the wall pass before every
- * force sweep (ghosts only); p is recomputed before use, so it is not
+ * checkpointed, not written); v_visc (optional: with walls) is rebuilt by the wall
+ * pass before every force sweep (ghosts only); p is recomputed before use, so it is not
  * migrated; x_build is internal (not written); gid, type, mass (and the
  * optional body and marks) change only at a neighbour build (F: ghosts keep their build's
  * copy, no refresh between builds sends them). */
@@ -39,7 +39,6 @@ static const expected_row base[] = {
     {"x", 2, FIELD_REAL, M | G | C | O, offsetof(particles, x)},
     {"v", 2, FIELD_REAL, M | G | C | O, offsetof(particles, v)},
     {"v_est", 2, FIELD_REAL, M | G, offsetof(particles, v_est)},
-    {"v_visc", 2, FIELD_REAL, G, offsetof(particles, v_visc)},
     {"a", 2, FIELD_REAL, M | C | O, offsetof(particles, a)},
     {"x_build", 2, FIELD_REAL, M | C, offsetof(particles, x_build)},
     {"mass", 1, FIELD_REAL, M | G | C | O | F, offsetof(particles, mass)},
@@ -92,7 +91,7 @@ static void test_row_bytes_and_member(void **state) {
   assert_int_equal(fields_row_bytes(fields_find("type")), sizeof(PetscInt));
   /* fields_member is the address of the pointer member itself */
   assert_true(fields_member(&ps, fields_find("x")) == (void **)&ps.x);
-  assert_true(fields_member(&ps, fields_find("v_visc")) == (void **)&ps.v_visc);
+  assert_true(fields_member(&ps, fields_find("v_est")) == (void **)&ps.v_est);
   assert_true(fields_member(&ps, fields_find("p")) == (void **)&ps.p);
   assert_true(fields_member(&ps, fields_find("gid")) == (void **)&ps.gid);
 }

@@ -47,7 +47,7 @@ static void test_guard_fields(void **state) {
   assert_int_equal(io_guard_finite(&s, FIELD_OUTPUT, "snap.h5"), PETSC_ERR_FP);
   assert_int_equal(io_guard_finite(&s, FIELD_CHECKPOINT, "checkpoint.h5"), PETSC_ERR_FP);
   s.ps.a[2][0] = 0;
-  s.ps.v_visc[0][1] = NAN; /* in neither */
+  s.ps.v_est[0][1] = NAN; /* in neither */
   OK(io_guard_finite(&s, FIELD_OUTPUT | FIELD_CHECKPOINT, "either.h5"));
   s.ps.x_build[0][1] = NAN; /* checkpoints only */
   OK(io_guard_finite(&s, FIELD_OUTPUT, "snap.h5"));

@@ -29,6 +29,7 @@ static int reset(void **state) {
   fields_reset();
   OK(fields_enable("x0"));
   OK(fields_enable("tracer"));
+  OK(fields_enable("v_visc"));
   return 0;
 }
 

@@ -148,6 +148,8 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
                        .av_beta = 2.0 * alpha};
   s->dom = (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
   s->pair_cutoff = h;
+  fields_reset();
+  OK(fields_enable("v_visc")); /* the sweeps' viscous velocity, as with walls */
   OK(particles_create(&s->ps));
   for (PetscInt i = 0; i < n; i++) {
     double x[2] = {unit_range(g, 0.0, 0.5), unit_range(g, 0.0, 0.35)};
