@@ -137,7 +137,7 @@ def main():
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
     ax.legend(loc="lower left", fontsize=8, ncol=5, markerscale=2, bbox_to_anchor=(0, 1.0), frameon=False)
-    ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d["tracer"] == 1)).sum()} in the sinus), "
+    ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d['tracer'] == 1)).sum()} in the sinus), "
                  f"{wall.sum()} wall, {leaflet.sum()} leaflet particles", fontsize=10, pad=22)
     zx, zy = (root[0] - 3, root[0] + 5), (root[1] - 2.5, root[1] + 3.2)
     ax.add_patch(plt.Rectangle((zx[0], zy[0]), zx[1] - zx[0], zy[1] - zy[0], fill=False, ls="--", lw=0.8))
