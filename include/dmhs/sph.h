@@ -48,6 +48,9 @@ struct sim;
 /* The sph module's parameters, for its scene to set defaults on before the options pass
  * (NULL when m is not the sph module). */
 sph_params *sph_defaults(module *m);
+/* The scenes' common liquid as defaults: Lucy kernel, Tait EOS, continuity density, support
+ * h [m], rho0 [kg/m^3], c0 [m/s], nu [m^2/s] (sph_defaults for the rest). */
+PetscErrorCode sph_set_liquid(module *m, double h, double rho0, double c0, double nu);
 /* The scene builds no wall particle: the viscous term reads v_est, and the v_visc field is
  * not made (memory); building a wall after this is an error. Before the options pass. */
 PetscErrorCode sph_set_no_walls(module *m);

@@ -33,6 +33,21 @@ sph_params *sph_defaults(module *sph) {
   return sph && !strcmp(sph->name, "sph") ? &((sph_data *)sph->data)->params : NULL;
 }
 
+PetscErrorCode sph_set_liquid(module *m, double h, double rho0, double c0, double nu) {
+  sph_params *sp = sph_defaults(m);
+  PetscFunctionBeginUser;
+  PetscCheck(sp, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "sph_set_liquid: module %s is not sph",
+             m ? m->name : "(none)");
+  sp->kernel = SPH_KERNEL_LUCY;
+  sp->h = h;
+  sp->rho0 = rho0;
+  sp->c0 = c0;
+  sp->nu = nu;
+  sp->eos = SPH_EOS_TAIT;
+  sp->density = SPH_DENSITY_CONTINUITY;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sph_set_no_walls(module *m) {
   PetscFunctionBeginUser;
   PetscCheck(sph_defaults(m), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
@@ -177,11 +192,12 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
     if (d->body)
       body_force_current(d->body, g);
     PetscCall(sph_wall_compute(s, sp, g, d->wall));
-  } else if (!(self->needs & MODULE_CELLS_ONLY) && s->ps.v_visc) /* else the sweeps read v_est */
-    PetscCall(PetscArraycpy(s->ps.v_visc, s->ps.v_est, s->ps.n_owned + s->ps.n_ghost));
+  }
+  /* without walls every sweep's viscous term reads v_est (no copy into v_visc) */
   d->force.visc_is_est = d->has_walls ? PETSC_FALSE : PETSC_TRUE;
   if (sp->kernel_correction)
-    PetscCall(sph_correction_compute(s, sp, &d->correction));
+    PetscCall(sph_correction_compute(s, sp, sph_viscous_velocity(&s->ps, d->force.visc_is_est),
+                                     &d->correction));
   if (sp->kernel_correction)
     PetscCall(sph_force_compute(s, sp, &d->force, d->correction.corr,
                                 (const double(*)[2])d->correction.pair));
@@ -284,7 +300,9 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
 
 static PetscErrorCode sph_virial(module *self, sim *s, double (*W)[3]) {
   PetscFunctionBeginUser;
-  PetscCall(sph_stress_virial(s, &((sph_data *)self->data)->params, W));
+  const sph_data *d = self->data;
+  PetscCall(
+      sph_stress_virial(s, &d->params, sph_viscous_velocity(&s->ps, d->force.visc_is_est), W));
   PetscFunctionReturn(0);
 }
 

@@ -11,13 +11,16 @@
 #include "sph_correction_iact.h"
 #include "sph_force.h"
 
-SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, double h, const double *restrict vol,
-                              const double (*restrict e)[2], sph_moments *restrict mom,
-                              double (*restrict pair)[2]) {
+typedef const double (*vel_rows)[2];
+typedef double (*pair_rows)[2];
+
+SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, double h, vel_rows vv,
+                              const double *restrict vol, const double (*restrict e)[2],
+                              sph_moments *restrict mom, double (*restrict pair)[2]) {
   const particles *ps = &s->ps;
   const PetscInt *restrict pi = s->cel.pair_i, *restrict pj = s->cel.pair_j;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
-  const double(*restrict v)[2] = (const double(*)[2])ps->v_visc;
+  const double(*restrict v)[2] = vv;
   const PetscInt *restrict type = ps->type;
   const double h2 = h * h, inv_h = 1.0 / h, norm = sph_kernel_norm(kernel, 2, h);
   for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
@@ -52,19 +55,17 @@ SPH_INLINE void moments_sweep(sph_kernel_kind kernel, sim *s, double h, const do
   }
 }
 
-typedef const double (*vel_rows)[2];
-typedef double (*pair_rows)[2];
-static void moments_lucy(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
-                         pair_rows p) {
-  moments_sweep(SPH_KERNEL_LUCY, s, h, V, vd, m, p);
+static void moments_lucy(sim *s, double h, vel_rows vv, const double *V, vel_rows vd,
+                         sph_moments *m, pair_rows p) {
+  moments_sweep(SPH_KERNEL_LUCY, s, h, vv, V, vd, m, p);
 }
-static void moments_cubic(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
-                          pair_rows p) {
-  moments_sweep(SPH_KERNEL_CUBIC, s, h, V, vd, m, p);
+static void moments_cubic(sim *s, double h, vel_rows vv, const double *V, vel_rows vd,
+                          sph_moments *m, pair_rows p) {
+  moments_sweep(SPH_KERNEL_CUBIC, s, h, vv, V, vd, m, p);
 }
-static void moments_wendland(sim *s, double h, const double *V, vel_rows vd, sph_moments *m,
-                             pair_rows p) {
-  moments_sweep(SPH_KERNEL_WENDLAND, s, h, V, vd, m, p);
+static void moments_wendland(sim *s, double h, vel_rows vv, const double *V, vel_rows vd,
+                             sph_moments *m, pair_rows p) {
+  moments_sweep(SPH_KERNEL_WENDLAND, s, h, vv, V, vd, m, p);
 }
 
 /* e = v_div - v_visc of a row: the divergence sees v_visc, but a wall's own
@@ -75,8 +76,9 @@ static void divergence_shift(const particles *ps, PetscInt i, double e[2]) {
   e[1] = wall ? ps->v[i][1] - ps->v_visc[i][1] : 0.0;
 }
 
-PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, sph_correction_work *w) {
-  static void (*const sweeps[])(sim *, double, const double *, vel_rows, sph_moments *,
+PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, const double (*vv)[2],
+                                      sph_correction_work *w) {
+  static void (*const sweeps[])(sim *, double, vel_rows, const double *, vel_rows, sph_moments *,
                                 pair_rows) = {moments_lucy, moments_cubic, moments_wendland};
   const particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
@@ -101,7 +103,7 @@ PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, sph_correcti
     w->vol[i] = i < ps->n_owned && ps->type[i] != PTYPE_WALL ? V : -V;
     divergence_shift(ps, i, w->e_div[i]);
   }
-  sweeps[sp->kernel](s, sp->h, w->vol, (vel_rows)w->e_div, w->mom, w->pair);
+  sweeps[sp->kernel](s, sp->h, vv, w->vol, (vel_rows)w->e_div, w->mom, w->pair);
   /* a sparse neighbourhood falls back to the plain operators (sph_correction_iact.h) */
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] != PTYPE_WALL)

@@ -187,8 +187,7 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
       .pj = s->cel.pair_j,
       .x = (const double(*)[2])ps->x,
       .v_est = (const double(*)[2])ps->v_est,
-      /* no v_visc field: no walls, and the viscous term's velocity is v_est */
-      .v_visc = (const double(*)[2])(ps->v_visc ? ps->v_visc : ps->v_est),
+      .v_visc = sph_viscous_velocity(ps, work->visc_is_est),
       .mass = ps->mass,
       .rho = ps->rho,
       .P = work->P,

@@ -11,7 +11,7 @@ typedef struct {
   PetscInt n_alloc;
   double *P, *inv_rho;
   sph_cells_work *cells; /* the vectorised sweep's copy (sph_force_cells.c) */
-  PetscBool visc_is_est; /* no walls: v_visc is a copy of v_est */
+  PetscBool visc_is_est; /* no walls: the viscous term reads v_est (sph_viscous_velocity) */
 } sph_force_work;
 /* corr: the per-row tensors of -sph_kernel_correction and pair: the per-pair kernel
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
@@ -33,6 +33,12 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
       P(stem##_cd), P(stem##_cd_av)                                                                \
     }                                                                                              \
   }
+/* The velocity every SPH sweep's viscous term sees per row: with walls v_visc (the wall
+ * pass's extrapolation on wall rows, v_est on the others), without them v_est itself. */
+static inline const double (*sph_viscous_velocity(const particles *ps,
+                                                  PetscBool visc_is_est))[DMHS_DIM] {
+  return (const double(*)[DMHS_DIM])(visc_is_est ? ps->v_est : ps->v_visc);
+}
 /* flops of one pair inside h (-log_view) */
 double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
 /* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
@@ -66,10 +72,13 @@ typedef struct {
   PetscInt n_pair_alloc;
   double (*pair)[2]; /* per pair of the list: (dW/dr)/r and 1/r^2, 0 beyond h */
 } sph_correction_work;
-PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, sph_correction_work *w);
+/* vv: the velocity of the viscous term per row (sph_viscous_velocity) */
+PetscErrorCode sph_correction_compute(sim *s, const sph_params *sp, const double (*vv)[2],
+                                      sph_correction_work *w);
 PetscErrorCode sph_correction_destroy(sph_correction_work *w);
 /* sph_stress.c: the SPH virial, pressure force and shear rate (stress diagnostics) */
-PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, double (*W)[3]);
+PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, const double (*vv)[2],
+                                 double (*W)[3]);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
 PetscErrorCode sph_density_summation(sim *s, const sph_params *sp);
 /* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */

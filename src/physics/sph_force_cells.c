@@ -314,9 +314,7 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
     X[k] = ps->x[i][0];
     Y[k] = ps->x[i][1];
   }
-  /* without walls v_visc is a copy of v_est (sph.c), which a cells-only run skips */
-  const double(*vv)[2] =
-      visc_is_est ? (const double(*)[2])ps->v_est : (const double(*)[2])ps->v_visc;
+  const double(*vv)[2] = sph_viscous_velocity(ps, visc_is_est);
   for (PetscInt k = 0; k < n; k++) {
     const PetscInt i = order[k];
     VX[k] = vv[i][0];

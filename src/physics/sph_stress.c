@@ -13,7 +13,8 @@
 #include "sph_force_iact.h"
 #include "sph_force.h"
 
-PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, double (*W)[3]) {
+PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, const double (*vv)[2],
+                                 double (*W)[3]) {
   particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
   const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h,
@@ -34,8 +35,7 @@ PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, double (*W)[3]) {
     const double grad = sph_kernel_grad(sp->kernel, 2, grad_norm, norm, inv_h, r);
     const double inv_ri = 1.0 / ps->rho[i], inv_rj = 1.0 / ps->rho[j];
     const double Pi = ps->p[i] * inv_ri * inv_ri, Pj = ps->p[j] * inv_rj * inv_rj;
-    const double vvisc[2] = {ps->v_visc[i][0] - ps->v_visc[j][0],
-                             ps->v_visc[i][1] - ps->v_visc[j][1]};
+    const double vvisc[2] = {vv[i][0] - vv[j][0], vv[i][1] - vv[j][1]};
     double T[2], Tp[2];
     sph_force_iact(rij, grad, Pi, Pj, inv_ri, inv_rj, vvisc, mu_sum, T);
     if (artificial) {

@@ -29,15 +29,8 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   /* the vein case's liquid (doc/cases.md) */
   module *sph;
   PetscCall(modules_enable(s, "sph", &sph));
-  sph_params *sp = sph_defaults(sph);
+  PetscCall(sph_set_liquid(sph, 2.5 * b->dx, 1056.0, 10.0, 3.3e-6)); /* h, rho0, c0, nu */
   PetscCall(sph_set_no_walls(sph)); /* a periodic box of liquid: no v_visc field */
-  sp->kernel = SPH_KERNEL_LUCY;
-  sp->h = 2.5 * b->dx;
-  sp->rho0 = 1056.0;
-  sp->c0 = 10.0;
-  sp->nu = 3.3e-6;
-  sp->eos = SPH_EOS_TAIT;
-  sp->density = SPH_DENSITY_CONTINUITY;
   PetscFunctionReturn(0);
 }
 

@@ -80,13 +80,7 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
   module *sph;
   PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
-  sp->kernel = SPH_KERNEL_LUCY;
-  sp->h = 3.0 * s->dx;
-  sp->rho0 = 1000.0;
-  sp->c0 = 0.01;
-  sp->nu = 1e-6;
-  sp->eos = SPH_EOS_TAIT;
-  sp->density = SPH_DENSITY_CONTINUITY;
+  PetscCall(sph_set_liquid(sph, 3.0 * s->dx, 1000.0, 0.01, 1e-6)); /* h, rho0, c0, nu */
   /* steady flows run for seconds to minutes: plain SPH sums drift with the
    * sheared lattice's arrangement, and a second-order interior needs a
    * second-order wall (doc/theory.md, "Long-time accuracy") */

@@ -84,14 +84,7 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   module *sph;
   PetscCall(fields_enable("x0")); /* the flap's particle CSV: displacements */
   PetscCall(modules_enable(s, "sph", &sph));
-  sph_params *sp = sph_defaults(sph);
-  sp->kernel = SPH_KERNEL_LUCY;
-  sp->h = 2.5 * f->dx;
-  sp->rho0 = 1000.0;
-  sp->c0 = 1.0;
-  sp->nu = 1e-4;
-  sp->eos = SPH_EOS_TAIT;
-  sp->density = SPH_DENSITY_CONTINUITY;
+  PetscCall(sph_set_liquid(sph, 2.5 * f->dx, 1000.0, 1.0, 1e-4)); /* h, rho0, c0, nu */
   PetscCall(modules_enable(s, "body_force", &f->body));
   PetscCall(body_force_set_default(f->body, 0.5, 0.0));
   PetscCall(topology_enable(s, BOND_HARMONIC));

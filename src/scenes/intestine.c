@@ -122,22 +122,17 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   module *sph;
   PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
-  sp->kernel = SPH_KERNEL_LUCY;
-  sp->h = 2.5 * c->dx;
-  sp->rho0 = 1000.0;
   /* c0 = 5 m/s, not the published 1 m/s (doc/validation.md, "Intestine"):
    * at 1 m/s (B = 143 Pa) the hydrostatic pressure of the 7.6 mm deep pockets
    * alone compresses the liquid by 5.7 %, and the pouring liquid reaches
-   * 0.2-0.4 m/s (Mach 0.2-0.4); 5 m/s keeps both within 1 % and 0.1 */
-  sp->c0 = 5.0;
-  sp->nu = 1e-5; /* inside the published 0.5e-6 ... 500e-6 m^2/s; quieter than water's 1e-6 */
+   * 0.2-0.4 m/s (Mach 0.2-0.4); 5 m/s keeps both within 1 % and 0.1;
+   * nu = 1e-5 lies inside the published 0.5e-6 ... 500e-6 m^2/s, quieter than water's 1e-6 */
+  PetscCall(sph_set_liquid(sph, 2.5 * c->dx, 1000.0, 5.0, 1e-5)); /* h, rho0, c0, nu */
   /* density diffusion: without it the liquid at rest on the membrane is
    * unstable (continuity density at cell Reynolds number c0 h/nu ~ 600:
    * at c0 = 5 m/s Mach 0.5 after 0.05 s with no wave, at 1 m/s Mach 0.17
    * after 0.12 s); with delta = 0.1 it stays at Mach 0.004 (doc/theory.md) */
   sp->delta = 0.1;
-  sp->eos = SPH_EOS_TAIT;
-  sp->density = SPH_DENSITY_CONTINUITY;
   /* the automatic dt unless -dt is given: the repulsion's limit (0.035 dx
    * [s/m], 8.8e-6 s at dx = 2.5e-4 m) lies below the published 1e-5 s, and
    * the bonds' limit tightens as the membrane stretches under the wave */

@@ -199,13 +199,7 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   module *sph;
   PetscCall(modules_enable(s, "sph", &sph));
   sph_params *sp = sph_defaults(sph);
-  sp->kernel = SPH_KERNEL_LUCY;
-  sp->h = 2.5 * v->dx;
-  sp->rho0 = 1056.0;
-  sp->c0 = 10.0;
-  sp->nu = 3.3e-6;
-  sp->eos = SPH_EOS_TAIT;
-  sp->density = SPH_DENSITY_CONTINUITY;
+  PetscCall(sph_set_liquid(sph, 2.5 * v->dx, 1056.0, 10.0, 3.3e-6)); /* h, rho0, c0, nu */
   /* at this low viscosity (cell Reynolds number c0 h/nu ~ 10^3) the continuity
    * density keeps acoustic noise that grows until the run blows up (measured:
    * a plain channel at rest, dt = 0.47 of the sound-speed limit, at t ~ 0.08 s);

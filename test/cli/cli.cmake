@@ -147,3 +147,9 @@ set_tests_properties(cli_out_of_memory PROPERTIES LABELS cli TIMEOUT 60)
 add_test(NAME cli_run_json_halo COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/run_json_halo.py
   ${DMHS_CLI_OUT}/run_json_halo ${DMHS_MPIRUN} -- ${DMHS_EXE})
 set_tests_properties(cli_run_json_halo PROPERTIES LABELS "cli;mpi" PROCESSORS 2 TIMEOUT 120)
+# a scene without walls has no v_visc field: every SPH sweep (corrected, pair list) reads v_est
+add_test(NAME cli_box_without_v_visc COMMAND ${DMHS_EXPECT_OUTPUT}
+  "dmhs summary: scene box, 400 particles.*20 steps"
+  -- ${DMHS_EXE} -scene box -box_nx 20 -box_ny 20 -dt 1e-6 -t_end 2e-5 -sph_kernel_correction true
+  -sph_force_sweep pairs -quiet -output_dir ${DMHS_CLI_OUT}/box_no_v_visc)
+set_tests_properties(cli_box_without_v_visc PROPERTIES LABELS cli TIMEOUT 60)

@@ -18,35 +18,15 @@
 
 #define N    400
 #define SIDE 20
+#include "mpi_check.h"
 /* the ghost width: 7 x 7 coarse cells of edge 1/7; the positions lie on a 1e-3 grid, so no
  * distance to a cell ties it */
 #define WIDTH 0.1303
 
 static sim s;
 static scene scn = {.name = "unit"};
-static char problem[512]; /* this rank's first failed check */
 /* the fields a refresh between builds sends (any set: ghost_bytes is theirs) */
 static const char *const refresh[] = {"x", "v_est", "rho"};
-
-#define CHECK(cond, ...)                                                                           \
-  do {                                                                                             \
-    if (!(cond) && !problem[0])                                                                    \
-      snprintf(problem, sizeof(problem), __VA_ARGS__);                                             \
-  } while (0)
-
-/* Fails on every rank when a check failed on any. */
-static void agree(const char *where) {
-  int mine = problem[0] != 0, any = 0;
-  assert_int_equal(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD), 0);
-  if (any)
-    fail_msg("%s: rank %d: %s", where, (int)s.rank, mine ? problem : "(failed on the other rank)");
-}
-
-/* The lattice position of particle k, jittered (the same on both ranks). */
-static void base_x(PetscInt64 k, double x[2]) {
-  x[0] = ((double)(k % SIDE) + 0.5) / SIDE + (double)((k * 37) % 11 - 5) * 1e-3;
-  x[1] = ((double)(k / SIDE) + 0.5) / SIDE + (double)((k * 53) % 7 - 3) * 1e-3;
-}
 
 static void add_particles(particles *ps) {
   for (PetscInt64 k = 0; k < N; k++) {

@@ -26,30 +26,10 @@
 
 #define N    400
 #define SIDE 20
+#include "mpi_check.h"
 
 static sim s;
 static scene scn = {.name = "unit"};
-static char problem[512]; /* this rank's first failed check */
-
-#define CHECK(cond, ...)                                                                           \
-  do {                                                                                             \
-    if (!(cond) && !problem[0])                                                                    \
-      snprintf(problem, sizeof(problem), __VA_ARGS__);                                             \
-  } while (0)
-
-/* Fails on every rank when a check failed on any. */
-static void agree(const char *where) {
-  int mine = problem[0] != 0, any = 0;
-  assert_int_equal(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD), 0);
-  if (any)
-    fail_msg("%s: rank %d: %s", where, (int)s.rank, mine ? problem : "(failed on the other rank)");
-}
-
-/* The lattice position of particle k, jittered (the same on both ranks). */
-static void base_x(PetscInt64 k, double x[2]) {
-  x[0] = ((double)(k % SIDE) + 0.5) / SIDE + (double)((k * 37) % 11 - 5) * 1e-3;
-  x[1] = ((double)(k / SIDE) + 0.5) / SIDE + (double)((k * 53) % 7 - 3) * 1e-3;
-}
 
 /* Positions of the phases: 0 lattice; 1 shifted by 0.37 in x (wrapped) and mirrored in y (with
  * x periodic, METIS may cut the box along x or along y: either way particles change rank);

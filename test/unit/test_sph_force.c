@@ -413,7 +413,7 @@ static void test_corrected_sweep(void **state) {
       /* the continuity velocity is v_est, the viscous one v_visc: make them one (liquid) */
       OK(PetscArraycpy(s.ps.v_visc, s.ps.v_est, s.ps.n_owned + s.ps.n_ghost));
       sph_p.kernel_correction = PETSC_TRUE;
-      OK(sph_correction_compute(&s, &sph_p, &cw));
+      OK(sph_correction_compute(&s, &sph_p, (const double(*)[2])s.ps.v_visc, &cw));
       OK(sph_force_compute(&s, &sph_p, &work, cw.corr, (const double(*)[2])cw.pair));
       double amax = 0, dmax = 0;
       for (PetscInt i = 0; i < s.ps.n_owned; i++) {
