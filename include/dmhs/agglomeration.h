@@ -8,9 +8,10 @@
  * bonds, each such clot particle picks its closest candidate (ties: the lower
  * gid); a mutual pair bonds when its draw u(seed, event, gid pair) < P. A
  * joined particle becomes PTYPE_CLOT, bonded harmonically (bond_clot.c) with
- * the rest length it had at creation. The bonds go into the replicated
- * topology under its run-time type, so they migrate, come with the halo,
- * weigh in the partition, appear in snapshots and are checkpointed here. */
+ * the rest length it had at creation. The bonds are added to the topology
+ * collectively (topology_add_bonds) under the bond type this module claims, so
+ * they travel with their particles, weigh in the partition, appear in snapshots
+ * and are checkpointed with the topology. */
 #ifndef DMHS_AGGLOMERATION_H
 #define DMHS_AGGLOMERATION_H
 #include <stdint.h>
@@ -52,7 +53,7 @@ PetscErrorCode agglomeration_pair(const agglomeration_rules *r, const agglomerat
                                   PetscInt n_clot, const agglomeration_point *cand, PetscInt n_cand,
                                   PetscInt *n_pairs, PetscInt (*pairs)[2], double *r0);
 
-/* Scene side (options pass, after topology_enable): defaults in the scene's
+/* Scene side (options pass, after solid_modules_enable): defaults in the scene's
  * units; an automatic seed chooser used when -agglomeration_seeds is not given
  * (collective; returns n <= AGGLOMERATION_MAX_SEEDS liquid gids, the same on
  * every rank). */
@@ -64,8 +65,8 @@ PetscErrorCode agglomeration_module_create(module **m);
 
 /* bond_clot.c: the clot bonds' force U = K (r - r0_b)^2 with each bond's own
  * rest length (topology bond_r0), their virial and energy (this rank's share). */
-PetscErrorCode bond_clot_compute(struct sim *s, double K);
-PetscErrorCode bond_clot_virial(struct sim *s, double K, double (*W)[3]);
-double bond_clot_energy_local(struct sim *s, double K);
+PetscErrorCode bond_clot_compute(struct sim *s, const void *owner, double K);
+PetscErrorCode bond_clot_virial(struct sim *s, const void *owner, double K, double (*W)[3]);
+double bond_clot_energy_local(struct sim *s, const void *owner, double K);
 
 #endif

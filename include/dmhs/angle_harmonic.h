@@ -7,7 +7,7 @@
 struct sim;
 
 PetscErrorCode angle_harmonic_module_create(module **m);
-/* The scene's defaults for every angle type; after topology_enable. */
+/* The scene's defaults for every angle type; after solid_modules_enable. */
 PetscErrorCode angle_set_default(struct sim *s, double k, double theta0_deg);
 /* Resolved k_a [J] and theta0 [rad] of type 0 (for scenes' diagnostics). */
 PetscErrorCode angle_get_params(struct sim *s, double *k, double *theta0);

@@ -32,7 +32,7 @@ typedef struct bond_params {
 PetscErrorCode bond_harmonic_module_create(module **m);
 PetscErrorCode bond_nonlinear_module_create(module **m);
 /* The scene's defaults for every bond type (rmax ignored by the harmonic style);
- * call after topology_enable, before the options pass of the modules. */
+ * call after solid_modules_enable, before the options pass of the modules. */
 PetscErrorCode bond_set_default(struct sim *s, double k, double r0, double rmax);
 /* Resolved bond parameters of the enabled bond module (for scenes' diagnostics). */
 PetscErrorCode bond_get_params(struct sim *s, bond_style *style, const bond_params **p);
@@ -44,6 +44,9 @@ PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_para
                                  const char *k_help);
 PetscErrorCode bond_setup_k_r0(struct sim *s, bond_params *p, const char *k_unit);
 PetscErrorCode bond_destroy(module *self);
+/* Claims for `self` every bond type of the scene's own bonds that no other module claimed
+ * (topology_claim_bond_type), in its setup. */
+PetscErrorCode bond_claim_scene_types(struct sim *s, const module *self);
 /* Shared by the solid modules' setup: checks per-type coefficients given for
  * n_given types cover n_types (one value = every type), names the option. */
 PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given,
@@ -54,10 +57,10 @@ PetscErrorCode bond_ensure_resolved(struct sim *s);
 /* Smallest mass among owned solid particles, over all ranks (+inf when none). */
 PetscErrorCode bond_min_solid_mass(struct sim *s, double *m);
 
-/* For scenes with solids: creates sim->topo, reads -bond_style (default: the scene's
- * style) and -special_bonds_include, and enables the bond module of that style and
- * angle_harmonic. Scene defaults for the bond/angle coefficients are set afterwards with
- * bond_set_default / angle_set_default. */
-PetscErrorCode topology_enable(struct sim *s, bond_style style);
+/* For scenes with solids: reads -bond_style (default: the scene's style) and
+ * -special_bonds_include, and enables the bond module of that style and angle_harmonic
+ * (which, needing bonds and angles, bring sim->topo). Scene defaults for the bond/angle
+ * coefficients are set afterwards with bond_set_default / angle_set_default. */
+PetscErrorCode solid_modules_enable(struct sim *s, bond_style style);
 
 #endif

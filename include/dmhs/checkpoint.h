@@ -8,6 +8,10 @@
  *                      next_output_t, next_progress_t, snapshot_index
  *   /particles/<field> every FIELD_CHECKPOINT field at its native width
  *   /particles/rank_counts  owned particles per rank when written
+ *   /topology/         the bond/angle store (scenes with bonds): bond_gid (n x 2),
+ *                      bond_type, bond_r0, bond_id, angle_gid (n x 3), angle_type,
+ *                      angle_id, each entry once (rows of the rank owning its first
+ *                      end); attributes next_bond_id, next_angle_id
  *   /modules/<name>/   private state of modules with checkpoint hooks
  *   /scene/            private state of the scene (e.g. error reports done)
  * Module and scene state is replicated (the same on every rank): hooks store
@@ -24,8 +28,10 @@ struct sim;
 
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
 /* 2: x_build (neighbour lists with a skin); 3: physics_options, per-dataset checksums;
- * 4: dt_anchor_t, dt_anchor_step, solid_substeps (dt and the sub-steps change during the run) */
-#define CHECKPOINT_FORMAT_VERSION 5
+ * 4: dt_anchor_t, dt_anchor_step, solid_substeps (dt and the sub-steps change during the run);
+ * 5: the tag split into load / segment / tracer; 6: /topology (the clot bonds leave the
+ * agglomeration module's state) */
+#define CHECKPOINT_FORMAT_VERSION 6
 
 /* Opaque handle given to the modules' and scene's checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;

@@ -70,11 +70,13 @@ struct module {
    * exactly as compute() distributes forces (writes to ghost rows are ignored). */
   PetscErrorCode (*virial)(module *self, struct sim *s, double (*W)[3]);
   /* Optional: runs at the end of every step, after the state check and
-   * before the scene's diagnostics. It may change the structure (bonds,
-   * types); it then sets sim->force_rebuild, so that the next step migrates
-   * and rebuilds ghosts, pairs and the topology's resolution before its force
-   * sweep (a rebuild here would leave migrated rows without their derived
-   * fields, e.g. p, until then), and checkpoints that flag. Collective. */
+   * before the scene's diagnostics. It may change the structure: bonds and
+   * angles through the collective topology_add_bonds / topology_remove_bonds,
+   * which mark the topology changed, or particle types, after which it sets
+   * sim->force_rebuild (and checkpoints that flag). Either way the next step
+   * migrates and rebuilds ghosts, pairs and the topology's resolution before
+   * its force sweep (a rebuild here would leave migrated rows without their
+   * derived fields, e.g. p, until then). Collective. */
   PetscErrorCode (*post_step)(module *self, struct sim *s);
 };
 

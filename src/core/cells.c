@@ -116,6 +116,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
       PetscCall(PetscMalloc1(c->n_alloc_sorted, &c->xs));
   }
   const PetscInt n_owned = ps->n_owned;
+  const struct topology *bonded = c->excl; /* its slot[]: which rows have exclusions */
   for (PetscInt a = 0; a < n; a++) {
     const PetscInt i = c->order[a];
     if (c->xs) {
@@ -123,7 +124,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
       c->xs[a][1] = ps->x[i][1];
     }
     c->flag[a] = (i >= n_owned ? 1 : 0) | (ps->type[i] == PTYPE_WALL ? 2 : 0) |
-                 (ps->type[i] != PTYPE_FLUID ? 4 : 0);
+                 (bonded && bonded->slot[i] >= 0 ? 4 : 0);
   }
 
   c->n_pairs = 0;
@@ -166,7 +167,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
               continue;
             const PetscInt i = c->order[a], j = c->order[b];
             /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 1 angle yes): only between two
-             * non-liquid particles, so liquid pairs never pay for the lookup */
+             * bonded particles, so liquid pairs never pay for the lookup */
             if ((both & 4) && excl && topology_excluded(excl, ps, i, j))
               continue;
             if (c->n_pairs == c->n_alloc_pairs)

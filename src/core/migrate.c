@@ -6,6 +6,7 @@
  *  3. (several ranks) send each owned particle whose coarse cell belongs to
  *     another rank to that rank with every FIELD_MIGRATE field (field table),
  *     compact the owned range, append the arrivals (in source-rank order);
+ *     and the bond/angle store entries of the leaving ones (topology_migrate);
  *  4. with -debug_migration, check that the global particle count and the set
  *     of global ids are unchanged (count, sum of gids and sum of a 64-bit hash
  *     of each gid, modulo 2^64). */
@@ -137,6 +138,9 @@ static PetscErrorCode migrate_exchange(sim *s) {
   }
   PetscCall(PetscMalloc2(off_out + 1, &send_buf, off_in + 1, &recv_buf));
   particles_pack(ps, f, nf, leaving, n_leave, NULL, send_buf);
+  /* bonds and angles go with their leaving ends (the receivers merge them by id) */
+  if (s->topo)
+    PetscCall(topology_migrate(s->topo, ps, s->comm, leaving, dest, n_leave));
   PetscCallMPI(
       MPI_Alltoallv(send_buf, b_out, d_out, MPI_BYTE, recv_buf, b_in, d_in, MPI_BYTE, s->comm));
   /* compact the staying particles (every field: they stay whole), then append arrivals */

@@ -110,7 +110,9 @@ PetscErrorCode neighbours_collect_ghost_reads(sim *s) {
 }
 
 PetscErrorCode neighbours_update(sim *s, PetscBool force) {
-  PetscBool rebuild = force;
+  /* bonds made or removed at run time (collectively, so every rank agrees) need their
+   * local lists and exclusions before the next force sweep */
+  PetscBool rebuild = force || (s->topo && s->topo->changed) ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionBeginUser;
   if (!rebuild)
     PetscCall(neighbours_due(s, &rebuild));

@@ -1,11 +1,12 @@
-/* Bonds and angles by global id, their exclusion lists, and their resolution
- * to local rows after every ghost build (see include/dmhs/topology.h).
+/* The bond/angle store by global id, its exclusion lists, and its resolution to
+ * local rows after every ghost build (see include/dmhs/topology.h). Collective
+ * changes and migration are in topology_exchange.c.
  *
- * Cost per step: one pass over the local rows (non-fluid rows do a binary
- * search in the sorted bonded-gid table), then one pass over the structure.
- * Exclusions are applied once, in the pair-list build (cells.c), only to pairs
- * of two non-fluid particles: every pair sum (SPH, repulsion) then sees the
- * filtered list at no cost inside its hot loop. */
+ * Cost per build: one pass over the local rows (a bit test per row, a binary search
+ * in the sorted bonded-gid table for bonded ones), then one pass over the store.
+ * Exclusions are applied once, in the pair-list build (cells.c), only to pairs of
+ * two bonded particles: every pair sum (SPH, repulsion) then sees the filtered list
+ * at no cost inside its hot loop. */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/topology.h"
@@ -14,7 +15,6 @@ PetscErrorCode topology_create(topology **t) {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(t));
   (*t)->dirty = PETSC_TRUE;
-  (*t)->runtime_type = -1;
   PetscFunctionReturn(0);
 }
 
@@ -23,9 +23,10 @@ PetscErrorCode topology_destroy(topology **tp) {
   PetscFunctionBeginUser;
   if (!t)
     PetscFunctionReturn(0);
-  PetscCall(PetscFree3(t->bond_gid, t->bond_type, t->bond_r0));
-  PetscCall(PetscFree2(t->angle_gid, t->angle_type));
+  PetscCall(PetscFree4(t->bond_gid, t->bond_type, t->bond_r0, t->bond_id));
+  PetscCall(PetscFree3(t->angle_gid, t->angle_type, t->angle_id));
   PetscCall(PetscFree(t->gids));
+  PetscCall(PetscFree(t->bonded_bits));
   PetscCall(PetscFree2(t->ex_start, t->ex_gid));
   PetscCall(PetscFree2(t->head, t->owned));
   PetscCall(PetscFree2(t->next, t->slot));
@@ -41,75 +42,138 @@ PetscErrorCode topology_add_bond(topology *t, PetscInt64 gi, PetscInt64 gj, Pets
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type,
-                                    double r0) {
+PetscErrorCode topology_check_bond(PetscInt64 gi, PetscInt64 gj, PetscInt type, double r0) {
   PetscFunctionBeginUser;
   PetscCheck(r0 >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": rest length %g m < 0", gi, gj, r0);
   PetscCheck(gi != gj, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
              "bond from particle gid %" PetscInt64_FMT " to itself", gi);
+  PetscCheck(gi >= 0 && gj >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": a negative gid", gi, gj);
   PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": type %" PetscInt_FMT " outside [0, %d)",
              gi, gj, type, TOPOLOGY_MAX_TYPES);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_check_angle(const PetscInt64 g[3], PetscInt type) {
+  PetscFunctionBeginUser;
+  PetscCheck(g[0] != g[1] && g[1] != g[2] && g[0] != g[2], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT " repeats a particle",
+             g[0], g[1], g[2]);
+  PetscCheck(g[0] >= 0 && g[1] >= 0 && g[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT ": a negative gid",
+             g[0], g[1], g[2]);
+  PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT
+             ": type %" PetscInt_FMT " outside [0, %d)",
+             g[0], g[1], g[2], type, TOPOLOGY_MAX_TYPES);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_store_bond(topology *t, PetscInt64 id, PetscInt64 gi, PetscInt64 gj,
+                                   PetscInt type, double r0) {
+  PetscFunctionBeginUser;
   if (t->n_bonds == t->n_alloc_bonds) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_bonds);
-    PetscInt64(*g)[2];
+    PetscInt64(*g)[2], *ids;
     PetscInt *ty;
     double *r;
-    PetscCall(PetscMalloc3(grown, &g, grown, &ty, grown, &r));
+    PetscCall(PetscMalloc4(grown, &g, grown, &ty, grown, &r, grown, &ids));
     if (t->n_bonds) {
       PetscCall(PetscArraycpy(g, t->bond_gid, t->n_bonds));
       PetscCall(PetscArraycpy(ty, t->bond_type, t->n_bonds));
       PetscCall(PetscArraycpy(r, t->bond_r0, t->n_bonds));
+      PetscCall(PetscArraycpy(ids, t->bond_id, t->n_bonds));
     }
-    PetscCall(PetscFree3(t->bond_gid, t->bond_type, t->bond_r0));
+    PetscCall(PetscFree4(t->bond_gid, t->bond_type, t->bond_r0, t->bond_id));
     t->bond_gid = g;
     t->bond_type = ty;
     t->bond_r0 = r;
+    t->bond_id = ids;
     t->n_alloc_bonds = grown;
   }
   t->bond_gid[t->n_bonds][0] = gi;
   t->bond_gid[t->n_bonds][1] = gj;
   t->bond_type[t->n_bonds] = type;
   t->bond_r0[t->n_bonds] = r0;
+  t->bond_id[t->n_bonds] = id;
   t->n_bonds++;
-  if (type != t->runtime_type)
-    t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
   t->dirty = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_store_angle(topology *t, PetscInt64 id, const PetscInt64 gid[3],
+                                    PetscInt type) {
+  PetscFunctionBeginUser;
+  if (t->n_angles == t->n_alloc_angles) {
+    const PetscInt grown = PetscMax(64, 2 * t->n_alloc_angles);
+    PetscInt64(*g)[3], *ids;
+    PetscInt *ty;
+    PetscCall(PetscMalloc3(grown, &g, grown, &ty, grown, &ids));
+    if (t->n_angles) {
+      PetscCall(PetscArraycpy(g, t->angle_gid, t->n_angles));
+      PetscCall(PetscArraycpy(ty, t->angle_type, t->n_angles));
+      PetscCall(PetscArraycpy(ids, t->angle_id, t->n_angles));
+    }
+    PetscCall(PetscFree3(t->angle_gid, t->angle_type, t->angle_id));
+    t->angle_gid = g;
+    t->angle_type = ty;
+    t->angle_id = ids;
+    t->n_alloc_angles = grown;
+  }
+  for (int k = 0; k < 3; k++)
+    t->angle_gid[t->n_angles][k] = gid[k];
+  t->angle_type[t->n_angles] = type;
+  t->angle_id[t->n_angles] = id;
+  t->n_angles++;
+  t->dirty = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode topology_add_bond_r0(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt type,
+                                    double r0) {
+  PetscFunctionBeginUser;
+  PetscCall(topology_check_bond(gi, gj, type, r0));
+  PetscCall(topology_store_bond(t, t->next_bond_id++, gi, gj, type, r0));
+  t->n_bonds_global++;
+  t->n_bonds_of_type[type]++;
+  if (!t->bond_owner[type])
+    t->n_bond_types = PetscMax(t->n_bond_types, type + 1);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, PetscInt64 gk,
                                   PetscInt type) {
+  const PetscInt64 g[3] = {gi, gj, gk};
   PetscFunctionBeginUser;
-  PetscCheck(gi != gj && gj != gk && gi != gk, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
-             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT " repeats a particle",
-             gi, gj, gk);
-  PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "angle %" PetscInt64_FMT "-%" PetscInt64_FMT "-%" PetscInt64_FMT
-             ": type %" PetscInt_FMT " outside [0, %d)",
-             gi, gj, gk, type, TOPOLOGY_MAX_TYPES);
-  if (t->n_angles == t->n_alloc_angles) {
-    const PetscInt grown = PetscMax(64, 2 * t->n_alloc_angles);
-    PetscInt64(*g)[3];
-    PetscInt *ty;
-    PetscCall(PetscMalloc2(grown, &g, grown, &ty));
-    if (t->n_angles) {
-      PetscCall(PetscArraycpy(g, t->angle_gid, t->n_angles));
-      PetscCall(PetscArraycpy(ty, t->angle_type, t->n_angles));
-    }
-    PetscCall(PetscFree2(t->angle_gid, t->angle_type));
-    t->angle_gid = g;
-    t->angle_type = ty;
-    t->n_alloc_angles = grown;
-  }
-  t->angle_gid[t->n_angles][0] = gi;
-  t->angle_gid[t->n_angles][1] = gj;
-  t->angle_gid[t->n_angles][2] = gk;
-  t->angle_type[t->n_angles] = type;
-  t->n_angles++;
+  PetscCall(topology_check_angle(g, type));
+  PetscCall(topology_store_angle(t, t->next_angle_id++, g, type));
+  t->n_angles_global++;
   t->n_angle_types = PetscMax(t->n_angle_types, type + 1);
+  PetscFunctionReturn(0);
+}
+
+void topology_clear(topology *t) {
+  t->n_bonds = t->n_angles = 0;
+  t->n_bonds_global = t->n_angles_global = 0;
+  t->next_bond_id = t->next_angle_id = 0;
+  for (int k = 0; k < TOPOLOGY_MAX_TYPES; k++)
+    t->n_bonds_of_type[k] = 0;
   t->dirty = PETSC_TRUE;
+  t->changed = PETSC_TRUE;
+}
+
+PetscErrorCode topology_claim_bond_type(topology *t, PetscInt type, const void *owner) {
+  PetscFunctionBeginUser;
+  PetscCheck(type >= 0 && type < TOPOLOGY_MAX_TYPES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "bond type %" PetscInt_FMT " outside [0, %d)", type, TOPOLOGY_MAX_TYPES);
+  PetscCheck(!t->bond_owner[type] || t->bond_owner[type] == owner, PETSC_COMM_SELF,
+             PETSC_ERR_ARG_INCOMP,
+             "bond type %" PetscInt_FMT " is claimed by two modules (each bond type belongs "
+             "to one force)",
+             type);
+  t->bond_owner[type] = owner;
   PetscFunctionReturn(0);
 }
 
@@ -204,18 +268,24 @@ static PetscErrorCode topology_build_tables(topology *t) {
     t->ex_start[++s] = n_ex;
   PetscCall(PetscFree(pairs));
   PetscCall(PetscMalloc2(n_unique, &t->head, n_unique, &t->owned));
+  /* one bit per gid up to the largest bonded one: most rows (the liquid) are not
+   * bonded, and a bit test tells them apart without the binary search */
+  PetscCall(PetscFree(t->bonded_bits));
+  t->n_bonded_bits = n_unique ? t->gids[n_unique - 1] + 1 : 0;
+  PetscCall(PetscCalloc1(t->n_bonded_bits / 64 + 1, &t->bonded_bits));
+  for (PetscInt k = 0; k < n_unique; k++)
+    t->bonded_bits[t->gids[k] / 64] |= (uint64_t)1 << (t->gids[k] % 64);
   t->dirty = PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode topology_push_bond(topology *t, PetscInt i, PetscInt j, PetscInt type,
-                                         double w, PetscInt64 b) {
+                                         double w, PetscInt b) {
   PetscFunctionBeginUser;
   if (t->n_bond_local == t->n_alloc_bond_local) {
     const PetscInt grown = PetscMax(64, 2 * t->n_alloc_bond_local);
-    PetscInt(*bond)[2], *ty;
+    PetscInt(*bond)[2], *ty, *ix;
     double *wt;
-    PetscInt64 *ix;
     PetscCall(PetscMalloc4(grown, &bond, grown, &ty, grown, &wt, grown, &ix));
     if (t->n_bond_local) {
       PetscCall(PetscArraycpy(bond, t->bond, t->n_bond_local));
@@ -306,6 +376,71 @@ PetscErrorCode topology_partner_count(topology *t, PetscInt64 gid, PetscInt *cou
   PetscFunctionReturn(0);
 }
 
+/* Slot of row r's gid, or -1 when the row is not bonded (a bit test first). */
+static inline PetscInt topology_row_slot(const topology *t, PetscInt64 g) {
+  if (g < 0 || g >= t->n_bonded_bits || !((t->bonded_bits[g / 64] >> (g % 64)) & 1))
+    return -1;
+  return topology_slot_of(t, g);
+}
+
+/* gid -> rows: owned rows first, then ghosts (rows are visited in reverse so each chain
+ * lists rows in increasing order: the owned copy heads it). Any particle type may be
+ * bonded. */
+static void topology_map_rows(topology *t, const particles *ps, PetscInt n) {
+  for (PetscInt s = 0; s < t->n_gids; s++)
+    t->head[s] = t->owned[s] = -1;
+  for (PetscInt r = n - 1; r >= 0; r--) {
+    t->next[r] = -1;
+    const PetscInt s = t->slot[r] = topology_row_slot(t, ps->gid[r]);
+    if (s < 0)
+      continue;
+    t->next[r] = t->head[s];
+    t->head[s] = r;
+    if (r < ps->n_owned)
+      t->owned[s] = r;
+  }
+}
+
+/* Drops the store entries none of whose ends is owned here (they left with migrated
+ * particles, whose new owners received them); the order of the rest is kept. Returns
+ * whether any went. */
+static PetscBool topology_prune(topology *t) {
+  PetscInt kept = 0;
+  const PetscInt nb = t->n_bonds, na = t->n_angles;
+  for (PetscInt b = 0; b < nb; b++) {
+    if (t->owned[topology_slot_of(t, t->bond_gid[b][0])] < 0 &&
+        t->owned[topology_slot_of(t, t->bond_gid[b][1])] < 0)
+      continue;
+    if (kept != b) {
+      t->bond_gid[kept][0] = t->bond_gid[b][0];
+      t->bond_gid[kept][1] = t->bond_gid[b][1];
+      t->bond_type[kept] = t->bond_type[b];
+      t->bond_r0[kept] = t->bond_r0[b];
+      t->bond_id[kept] = t->bond_id[b];
+    }
+    kept++;
+  }
+  t->n_bonds = kept;
+  kept = 0;
+  for (PetscInt a = 0; a < na; a++) {
+    PetscBool mine = PETSC_FALSE;
+    for (int k = 0; k < 3; k++)
+      if (t->owned[topology_slot_of(t, t->angle_gid[a][k])] >= 0)
+        mine = PETSC_TRUE;
+    if (!mine)
+      continue;
+    if (kept != a) {
+      for (int k = 0; k < 3; k++)
+        t->angle_gid[kept][k] = t->angle_gid[a][k];
+      t->angle_type[kept] = t->angle_type[a];
+      t->angle_id[kept] = t->angle_id[a];
+    }
+    kept++;
+  }
+  t->n_angles = kept;
+  return t->n_bonds < nb || t->n_angles < na ? PETSC_TRUE : PETSC_FALSE;
+}
+
 PetscErrorCode topology_resolve(topology *t, const particles *ps) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
@@ -316,24 +451,12 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
     t->n_alloc_rows = n + n / 4 + 16;
     PetscCall(PetscMalloc2(t->n_alloc_rows, &t->next, t->n_alloc_rows, &t->slot));
   }
-  for (PetscInt s = 0; s < t->n_gids; s++)
-    t->head[s] = t->owned[s] = -1;
-  /* gid -> rows: owned rows first, then ghosts (rows are visited in reverse so
-   * each chain lists rows in increasing order: the owned copy heads it) */
-  for (PetscInt r = n - 1; r >= 0; r--) {
-    t->slot[r] = -1;
-    t->next[r] = -1;
-    if (ps->type[r] == PTYPE_FLUID)
-      continue; /* bonded particles are solids, walls or clot particles */
-    const PetscInt s = topology_slot_of(t, ps->gid[r]);
-    if (s < 0)
-      continue;
-    t->slot[r] = s;
-    t->next[r] = t->head[s];
-    t->head[s] = r;
-    if (r < ps->n_owned)
-      t->owned[s] = r;
+  topology_map_rows(t, ps, n);
+  if (topology_prune(t)) { /* the tables shrink with the store */
+    PetscCall(topology_build_tables(t));
+    topology_map_rows(t, ps, n);
   }
+  t->changed = PETSC_FALSE;
 
   t->n_bond_local = 0;
   for (PetscInt b = 0; b < t->n_bonds; b++) {
@@ -345,7 +468,7 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
       const PetscInt rb = topology_nearest(t, ps, sb, ps->x[oa]);
       PetscCheck(rb >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": partner gid %" PetscInt64_FMT
-                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the "
+                 " is neither owned nor a ghost here (does it exist? is it farther than the "
                  "ghost width?)",
                  t->bond_gid[b][0], t->bond_gid[b][1], t->bond_gid[b][1]);
       b_done = rb == ob ? PETSC_TRUE : PETSC_FALSE;
@@ -355,7 +478,7 @@ PetscErrorCode topology_resolve(topology *t, const particles *ps) {
       const PetscInt ra = topology_nearest(t, ps, sa, ps->x[ob]);
       PetscCheck(ra >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "bond %" PetscInt64_FMT "-%" PetscInt64_FMT ": partner gid %" PetscInt64_FMT
-                 " is neither owned nor a ghost here (is it a fluid particle, or farther than the "
+                 " is neither owned nor a ghost here (does it exist? is it farther than the "
                  "ghost width?)",
                  t->bond_gid[b][0], t->bond_gid[b][1], t->bond_gid[b][0]);
       PetscCall(topology_push_bond(t, ra, ob, t->bond_type[b], ra == oa ? 1.0 : 0.5, b));

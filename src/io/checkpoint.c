@@ -10,6 +10,8 @@
  *     next output / progress times and the snapshot counter (nothing a force
  *     evaluation reads from the previous one: the body force is evaluated
  *     before the walls read it, in the same evaluation).
+ *   - the bond/angle store (topology_checkpoint.c), each entry written by the
+ *     rank owning its first end;
  *   - modules' and the scene's private state through their checkpoint hooks.
  * Reading validates before it changes anything it cannot restore: magic,
  * format version, scene, particle count, and each dataset's shape and type. */
@@ -20,6 +22,7 @@
 #include "h5check.h"
 #include "h5io.h"
 #include "guard.h"
+#include "checkpoint_rows.h"
 
 struct checkpoint_io {
   MPI_Comm comm;
@@ -66,10 +69,9 @@ static PetscErrorCode checkpoint_checksum(MPI_Comm comm, const field_desc *f, co
   PetscFunctionReturn(0);
 }
 
-/* h5io_write_rows (native width), then the dataset's checksum. Collective. */
-static PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid_t loc,
-                                            const field_desc *f, const void *data, PetscInt n_local,
-                                            PetscInt64 offset, PetscInt64 n) {
+PetscErrorCode checkpoint_write_rows(MPI_Comm comm, const char *path, hid_t loc,
+                                     const field_desc *f, const void *data, PetscInt n_local,
+                                     PetscInt64 offset, PetscInt64 n) {
   uint64_t sum;
   hid_t dset;
   PetscFunctionBeginUser;
@@ -103,10 +105,9 @@ static PetscErrorCode checkpoint_verify(MPI_Comm comm, const char *path, hid_t l
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode checkpoint_read_rows(MPI_Comm comm, const char *path, hid_t loc,
-                                           const char *where, const field_desc *f, void *data,
-                                           PetscInt n_local, PetscInt64 offset, PetscInt64 n,
-                                           PetscBool reduce) {
+PetscErrorCode checkpoint_read_rows(MPI_Comm comm, const char *path, hid_t loc, const char *where,
+                                    const field_desc *f, void *data, PetscInt n_local,
+                                    PetscInt64 offset, PetscInt64 n, PetscBool reduce) {
   PetscFunctionBeginUser;
   PetscCall(h5io_read_rows(comm, path, loc, f, data, n_local, offset, n));
   PetscCall(checkpoint_verify(comm, path, loc, where, f, data, n_local, offset, reduce));
@@ -285,6 +286,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   }
   PetscCall(checkpoint_write_rows(s->comm, tmp, grp, &counts_desc, &my_count, 1, s->rank, s->size));
   PetscCallHDF5(tmp, H5Gclose(grp));
+  if (s->topo) /* bonds and angles, made at build or at run time */
+    PetscCall(topology_checkpoint_write(s, tmp, fid));
 
   /* private state of modules and scene */
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "modules", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
@@ -314,8 +317,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
 }
 
 /* Opens group `name` under loc, or fails naming what is missing. */
-static PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const char *name,
-                                            const char *what, hid_t *grp) {
+PetscErrorCode checkpoint_open_group(const char *path, hid_t loc, const char *name,
+                                     const char *what, hid_t *grp) {
   htri_t exists;
   PetscFunctionBeginUser;
   PetscCallHDF5(path, exists = H5Lexists(loc, name, H5P_DEFAULT));
@@ -467,6 +470,10 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
              "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
   s->step = (PetscInt)step;
   s->io.snapshot_index = (PetscInt)snapshot_index;
+
+  /* the structure (before the modules' state, which may refer to it) */
+  if (s->topo)
+    PetscCall(topology_checkpoint_read(s, path, fid));
 
   /* private state */
   for (int m = 0; m < s->n_modules; m++) {

@@ -20,49 +20,73 @@ PetscErrorCode snapshot_name(PetscInt index, char *name, size_t len) {
 }
 
 /* /bonds/rows: each bond as the two rows of this snapshot's particle datasets it
- * joins, for the XDMF Polyline grid. The topology is replicated by gid, so
- * every rank marks the snapshot row of its owned bonded particles and a max
- * reduction gives every rank the row of every bonded gid; rank 0 writes. */
+ * joins, for the XDMF Polyline grid. The store is distributed: each bond is written
+ * by the rank owning its first end (rank order, then id order); the rows of second
+ * ends owned elsewhere are asked of every rank at once (bonds across rank borders
+ * are few: a gather of their gids and a max reduction of the answers). */
 static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, PetscInt64 offset,
                                            PetscInt64 *n_bonds) {
   topology *t = s->topo;
-  PetscInt64 *row, *pairs = NULL;
   static const field_desc rows_field = {"rows", 2, FIELD_INT64, 0, 0, "1"};
+  PetscInt64 *og, *pairs, *ask, *all_ask, *answer, my_offset;
+  PetscInt *orow, nb = 0, n_ask = 0;
+  PetscMPIInt *counts, *displs, n_mine;
   hid_t grp;
   PetscFunctionBeginUser;
-  *n_bonds = t ? t->n_bonds : 0;
+  *n_bonds = t ? t->n_bonds_global : 0;
   if (!*n_bonds)
     PetscFunctionReturn(0);
-  PetscInt slot;
-  PetscCall(topology_gid_slot(t, t->bond_gid[0][0], &slot)); /* builds the gid tables if needed */
-  PetscCall(PetscMalloc1(t->n_gids + 1, &row));
-  for (PetscInt k = 0; k < t->n_gids; k++)
-    row[k] = -1;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    PetscCall(topology_gid_slot(t, s->ps.gid[i], &slot));
-    if (slot >= 0)
-      row[slot] = offset + i;
+  PetscCall(topology_owned_lookup(&s->ps, &og, &orow));
+  PetscCall(PetscMalloc2(2 * t->n_bonds + 2, &pairs, t->n_bonds + 1, &ask));
+  for (PetscInt b = 0; b < t->n_bonds; b++) {
+    const PetscInt r0 = topology_lookup_row(og, orow, s->ps.n_owned, t->bond_gid[b][0]);
+    if (r0 < 0)
+      continue; /* written by its first end's owner */
+    const PetscInt r1 = topology_lookup_row(og, orow, s->ps.n_owned, t->bond_gid[b][1]);
+    pairs[2 * nb] = offset + r0;
+    pairs[2 * nb + 1] = r1 >= 0 ? offset + r1 : -1 - n_ask; /* -1 - k: the k-th question */
+    if (r1 < 0)
+      ask[n_ask++] = t->bond_gid[b][1];
+    nb++;
+  }
+  /* every rank's questions, answered by the owners */
+  PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
+  n_mine = (PetscMPIInt)n_ask;
+  PetscCallMPI(MPI_Allgather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, s->comm));
+  displs[0] = 0;
+  for (PetscMPIInt r = 0; r < s->size; r++)
+    displs[r + 1] = displs[r] + counts[r];
+  const PetscInt n_all = displs[s->size];
+  PetscCall(PetscMalloc2(n_all + 1, &all_ask, n_all + 1, &answer));
+  PetscCallMPI(
+      MPI_Allgatherv(ask, n_mine, MPIU_INT64, all_ask, counts, displs, MPIU_INT64, s->comm));
+  for (PetscInt k = 0; k < n_all; k++) {
+    const PetscInt r = topology_lookup_row(og, orow, s->ps.n_owned, all_ask[k]);
+    answer[k] = r >= 0 ? offset + r : -1;
   }
   PetscCallMPI(
-      MPI_Allreduce(MPI_IN_PLACE, row, (PetscMPIInt)t->n_gids, MPIU_INT64, MPI_MAX, s->comm));
-  if (s->rank == 0) {
-    PetscCall(PetscMalloc1(2 * t->n_bonds, &pairs));
-    for (PetscInt b = 0; b < t->n_bonds; b++)
-      for (int e = 0; e < 2; e++) {
-        PetscCall(topology_gid_slot(t, t->bond_gid[b][e], &slot));
-        PetscCheck(slot >= 0 && row[slot] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                   "snapshot: bond %" PetscInt_FMT " names particle gid %" PetscInt64_FMT
-                   " that no rank owns",
-                   b, t->bond_gid[b][e]);
-        pairs[2 * b + e] = row[slot];
-      }
+      MPI_Allreduce(MPI_IN_PLACE, answer, (PetscMPIInt)n_all, MPIU_INT64, MPI_MAX, s->comm));
+  for (PetscInt b = 0; b < nb; b++) {
+    if (pairs[2 * b + 1] >= 0)
+      continue;
+    const PetscInt k = (PetscInt)(-1 - pairs[2 * b + 1]);
+    pairs[2 * b + 1] = answer[displs[s->rank] + k];
+    PetscCheck(pairs[2 * b + 1] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "snapshot: a bond names particle gid %" PetscInt64_FMT " that no rank owns", ask[k]);
   }
+  PetscInt64 n_check;
+  PetscCall(h5io_offsets(s->comm, nb, &my_offset, &n_check));
+  PetscCheck(n_check == *n_bonds, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "snapshot: %" PetscInt64_FMT " bonds written over the ranks, %" PetscInt64_FMT
+             " in the structure",
+             n_check, *n_bonds);
   PetscCallHDF5(path, grp = H5Gcreate2(fid, "bonds", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, s->rank == 0 ? t->n_bonds : 0,
-                            0, t->n_bonds, 2));
+  PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, nb, my_offset, n_check, 2));
   PetscCallHDF5(path, H5Gclose(grp));
-  PetscCall(PetscFree(pairs));
-  PetscCall(PetscFree(row));
+  PetscCall(PetscFree2(all_ask, answer));
+  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree2(pairs, ask));
+  PetscCall(PetscFree2(og, orow));
   PetscFunctionReturn(0);
 }
 

@@ -5,11 +5,11 @@
  *
  * Determinism: an event is collective. Every rank gathers the clot particles
  * and the candidates (MPI_Allgatherv), sorts them by gid and takes the same
- * decisions, then adds the same bonds in the same order to its copy of the
- * replicated topology; the random draw of a pair is a hash of (seed, event,
- * gid pair). The clots are then the same on any rank count and across a
- * restart (the run-time bonds, their rest lengths and the clot membership are
- * checkpointed here; the particle types with the particles).
+ * decisions; the rank owning a bond's clot end gives it to the collective
+ * topology_add_bonds, which numbers the bonds by their gids; the random draw of a
+ * pair is a hash of (seed, event, gid pair). The clots are then the same on any
+ * rank count and across a restart (the clot membership is checkpointed here, the
+ * bonds with the topology, the particle types with the particles).
  *
  * clots.csv (rank 0): step,t,clot_particles,clot_bonds,clot_1..clot_n, one row
  * at the seeding and at every event; clot_k counts the particles of seed k's clot. */
@@ -127,9 +127,8 @@ typedef struct {
   PetscInt n_seeds;
   PetscInt64 seed_gid[AGGLOMERATION_MAX_SEEDS];
   PetscInt n_clot, n_alloc;
-  PetscInt64 *clot_gid; /* sorted */
-  PetscInt *clot_seed;  /* seed index of each clot particle's clot */
-  PetscInt n_static_bonds;
+  PetscInt64 *clot_gid;     /* sorted */
+  PetscInt *clot_seed;      /* seed index of each clot particle's clot */
   PetscInt64 restart_event; /* next_event when the run (re)started */
   FILE *csv;
 } agg_data;
@@ -272,8 +271,8 @@ static PetscErrorCode agg_write_row(sim *s, agg_data *d) {
   PetscInt count[AGGLOMERATION_MAX_SEEDS] = {0};
   for (PetscInt k = 0; k < d->n_clot; k++)
     count[d->clot_seed[k]]++;
-  int ok = fprintf(d->csv, "%" PetscInt_FMT ",%.8g,%" PetscInt_FMT ",%" PetscInt_FMT, s->step, s->t,
-                   d->n_clot, s->topo->n_bonds - d->n_static_bonds) > 0;
+  int ok = fprintf(d->csv, "%" PetscInt_FMT ",%.8g,%" PetscInt_FMT ",%" PetscInt64_FMT, s->step,
+                   s->t, d->n_clot, s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE]) > 0;
   for (PetscInt k = 0; k < d->n_seeds; k++)
     ok = ok && fprintf(d->csv, ",%" PetscInt_FMT, count[k]) > 0;
   ok = ok && fprintf(d->csv, "\n") > 0 && fflush(d->csv) == 0;
@@ -313,13 +312,30 @@ static PetscErrorCode agg_seed(sim *s, agg_data *d) {
   PetscFunctionReturn(0);
 }
 
+/* Clot bonds of each owned clot particle in mine[] (sorted by gid): the store holds
+ * every bond of an owned particle. */
+static PetscErrorCode agg_count_bonds(const topology *t, agglomeration_point *mine, PetscInt n) {
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bonds; b++) {
+    if (t->bond_type[b] != AGGLOMERATION_BOND_TYPE)
+      continue;
+    for (int e = 0; e < 2; e++) {
+      const agglomeration_point key = {t->bond_gid[b][e], {0, 0}, 0};
+      agglomeration_point *p = bsearch(&key, mine, (size_t)n, sizeof(*mine), cmp_point);
+      if (p)
+        p->n_bonds++;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode agg_grow(sim *s, agg_data *d, PetscInt64 event) {
   const particles *ps = &s->ps;
   topology *t = s->topo;
   agglomeration_point *mine, *clot, *cand;
   PetscInt n_mine = 0, n_clot, n_cand;
   PetscFunctionBeginUser;
-  /* clot particles, with their clot bond counts (from the replicated topology) */
+  /* owned clot particles, with their clot bond counts */
   PetscCall(PetscMalloc1(ps->n_owned + 1, &mine));
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] == PTYPE_CLOT) {
@@ -328,17 +344,12 @@ static PetscErrorCode agg_grow(sim *s, agg_data *d, PetscInt64 event) {
       mine[n_mine].x[1] = ps->x[i][1];
       mine[n_mine++].n_bonds = 0;
     }
+  qsort(mine, (size_t)n_mine, sizeof(*mine), cmp_point);
+  PetscCall(agg_count_bonds(t, mine, n_mine));
   PetscCall(agg_allgather(s, mine, n_mine, &clot, &n_clot));
   PetscCheck(n_clot == d->n_clot, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "agglomeration: %" PetscInt_FMT " clot particles found, %" PetscInt_FMT " expected",
              n_clot, d->n_clot);
-  for (PetscInt b = d->n_static_bonds; b < t->n_bonds; b++)
-    for (int e = 0; e < 2; e++) {
-      const PetscInt k = agg_clot_index(d, t->bond_gid[b][e]);
-      PetscCheck(k >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "agglomeration: a clot bond names a non-clot particle");
-      clot[k].n_bonds++; /* clot[] and clot_gid[] are both sorted by gid */
-    }
   /* candidates: liquid particles within R_max of a clot particle */
   n_mine = 0;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
@@ -362,17 +373,30 @@ static PetscErrorCode agg_grow(sim *s, agg_data *d, PetscInt64 event) {
   const agglomeration_rules rules = {
       d->rmax, d->probability, d->max_bonds, (uint64_t)d->rng_seed, (uint64_t)event, &s->dom};
   const PetscInt cap = PetscMin(n_clot, n_cand) + 1;
-  PetscInt n_pairs, (*pairs)[2], *seed;
-  double *r0;
-  PetscInt64 *joined;
+  PetscInt n_pairs, (*pairs)[2], *seed, *types, n_given = 0;
+  double *r0, *r0_given;
+  PetscInt64 *joined, (*given)[2], *og;
+  PetscInt *orow;
   PetscCall(PetscMalloc4(cap, &pairs, cap, &r0, cap, &joined, cap, &seed));
+  PetscCall(PetscMalloc3(cap, &given, cap, &types, cap, &r0_given));
   PetscCall(agglomeration_pair(&rules, clot, n_clot, cand, n_cand, &n_pairs, pairs, r0));
+  /* every rank took the same decisions: the owner of each bond's clot end gives it */
+  PetscCall(topology_owned_lookup(ps, &og, &orow));
   for (PetscInt k = 0; k < n_pairs; k++) {
     const PetscInt64 gc = clot[pairs[k][0]].gid, gf = cand[pairs[k][1]].gid;
-    PetscCall(topology_add_bond_r0(t, gc, gf, AGGLOMERATION_BOND_TYPE, r0[k]));
+    if (topology_lookup_row(og, orow, ps->n_owned, gc) >= 0) {
+      given[n_given][0] = gc;
+      given[n_given][1] = gf;
+      types[n_given] = AGGLOMERATION_BOND_TYPE;
+      r0_given[n_given++] = r0[k];
+    }
     joined[k] = gf;
     seed[k] = d->clot_seed[agg_clot_index(d, gc)];
   }
+  PetscCall(
+      topology_add_bonds(t, ps, s->comm, n_given, (const PetscInt64(*)[2])given, types, r0_given));
+  PetscCall(PetscFree2(og, orow));
+  PetscCall(PetscFree3(given, types, r0_given));
   PetscCall(agg_add_members(d, n_pairs, joined, seed));
   qsort(joined, (size_t)n_pairs, sizeof(PetscInt64), cmp_gid);
   agg_mark_owned(s, n_pairs, joined);
@@ -470,7 +494,7 @@ static PetscErrorCode agglomeration_setup(module *self, sim *s) {
   const bond_params *bp;
   PetscFunctionBeginUser;
   PetscCheck(s->topo, s->comm, PETSC_ERR_ORDER,
-             "agglomeration needs the scene's topology (topology_enable)");
+             "agglomeration needs the bonds of a bond module (solid_modules_enable)");
   PetscCall(bond_get_params(s, &style, &bp));
   PetscCheck(style == BOND_HARMONIC, s->comm, PETSC_ERR_ARG_INCOMP,
              "agglomeration: clots need -bond_style harmonic (the nonlinear bond module does not "
@@ -480,8 +504,8 @@ static PetscErrorCode agglomeration_setup(module *self, sim *s) {
              AGGLOMERATION_BOND_TYPE);
   if (!d->k_set)
     d->bond_k = bp->k[0];
-  s->topo->runtime_type = AGGLOMERATION_BOND_TYPE;
-  d->n_static_bonds = s->topo->n_bonds;
+  /* the clot bonds are this module's: the bond module leaves them to it */
+  PetscCall(topology_claim_bond_type(s->topo, AGGLOMERATION_BOND_TYPE, self));
   double local = INFINITY;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
     if (s->ps.type[i] == PTYPE_FLUID)
@@ -495,22 +519,22 @@ static PetscErrorCode agglomeration_setup(module *self, sim *s) {
 static PetscErrorCode agglomeration_compute(module *self, sim *s) {
   const agg_data *d = self->data;
   PetscFunctionBeginUser;
-  if (s->topo->n_bonds > d->n_static_bonds)
-    PetscCall(bond_clot_compute(s, d->bond_k));
+  if (s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE] > 0)
+    PetscCall(bond_clot_compute(s, self, d->bond_k));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode agglomeration_virial(module *self, sim *s, double (*W)[3]) {
   const agg_data *d = self->data;
   PetscFunctionBeginUser;
-  if (s->topo->n_bonds > d->n_static_bonds)
-    PetscCall(bond_clot_virial(s, d->bond_k, W));
+  if (s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE] > 0)
+    PetscCall(bond_clot_virial(s, self, d->bond_k, W));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode agglomeration_energy(module *self, sim *s, double *e) {
   const agg_data *d = self->data;
-  const double local = bond_clot_energy_local(s, d->bond_k);
+  const double local = bond_clot_energy_local(s, self, d->bond_k);
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
@@ -540,13 +564,12 @@ static PetscErrorCode agglomeration_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionReturn(0);
 }
 
+/* The bonds themselves are the topology's (checkpointed with it); their count is kept
+ * here to check that the two agree on restart. */
 static PetscErrorCode agglomeration_checkpoint_write(module *self, sim *s, checkpoint_io *io) {
   const agg_data *d = self->data;
-  const topology *t = s->topo;
-  const PetscInt nb = t->n_bonds - d->n_static_bonds;
-  PetscInt64 state[5] = {d->next_event, d->n_seeds, d->n_clot, nb, s->force_rebuild ? 1 : 0}, *g,
-             *sd;
-  double *r0;
+  const PetscInt64 nb = s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE];
+  PetscInt64 state[5] = {d->next_event, d->n_seeds, d->n_clot, nb, s->force_rebuild ? 1 : 0}, *sd;
   PetscFunctionBeginUser;
   PetscCall(checkpoint_put_ints(io, "state", state, 5));
   if (d->n_seeds)
@@ -559,37 +582,30 @@ static PetscErrorCode agglomeration_checkpoint_write(module *self, sim *s, check
     PetscCall(checkpoint_put_ints(io, "clot_seed", sd, d->n_clot));
     PetscCall(PetscFree(sd));
   }
-  if (nb) {
-    PetscCall(PetscMalloc2(2 * nb, &g, nb, &r0));
-    for (PetscInt b = 0; b < nb; b++) {
-      g[2 * b] = t->bond_gid[d->n_static_bonds + b][0];
-      g[2 * b + 1] = t->bond_gid[d->n_static_bonds + b][1];
-      r0[b] = t->bond_r0[d->n_static_bonds + b];
-    }
-    PetscCall(checkpoint_put_ints(io, "bond_gid", g, 2 * nb));
-    PetscCall(checkpoint_put_reals(io, "bond_r0", r0, nb));
-    PetscCall(PetscFree2(g, r0));
-  }
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode agglomeration_checkpoint_read(module *self, sim *s, checkpoint_io *io) {
   agg_data *d = self->data;
-  topology *t = s->topo;
-  PetscInt64 state[5], *g;
-  double *r0;
+  PetscInt64 state[5];
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_ints(io, "state", state, 5));
   PetscCheck(state[1] >= 0 && state[1] <= AGGLOMERATION_MAX_SEEDS && state[2] >= 0 && state[3] >= 0,
              PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: invalid agglomeration state");
-  PetscCheck(t->n_bonds == d->n_static_bonds && d->n_clot == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "agglomeration: restart into a run that already made clot bonds");
+  PetscCheck(d->n_clot == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "agglomeration: restart into a run that already made clots");
+  /* the topology was read before the modules' state */
+  PetscCheck(state[3] == s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE], PETSC_COMM_SELF,
+             PETSC_ERR_FILE_UNEXPECTED,
+             "checkpoint: the agglomeration state counts %" PetscInt64_FMT
+             " clot bonds, the topology holds %" PetscInt64_FMT,
+             state[3], s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE]);
   d->next_event = d->restart_event = state[0];
   s->force_rebuild = state[4] ? PETSC_TRUE : PETSC_FALSE; /* written at an event's step */
   d->n_seeds = (PetscInt)state[1];
   if (d->n_seeds)
     PetscCall(checkpoint_get_ints(io, "seed_gid", d->seed_gid, d->n_seeds));
-  const PetscInt nc = (PetscInt)state[2], nb = (PetscInt)state[3];
+  const PetscInt nc = (PetscInt)state[2];
   if (nc) {
     PetscInt64 *cg, *cs;
     PetscInt *seed;
@@ -600,14 +616,6 @@ static PetscErrorCode agglomeration_checkpoint_read(module *self, sim *s, checkp
       seed[k] = (PetscInt)cs[k];
     PetscCall(agg_add_members(d, nc, cg, seed));
     PetscCall(PetscFree3(cg, cs, seed));
-  }
-  if (nb) {
-    PetscCall(PetscMalloc2(2 * nb, &g, nb, &r0));
-    PetscCall(checkpoint_get_ints(io, "bond_gid", g, 2 * nb));
-    PetscCall(checkpoint_get_reals(io, "bond_r0", r0, nb));
-    for (PetscInt b = 0; b < nb; b++)
-      PetscCall(topology_add_bond_r0(t, g[2 * b], g[2 * b + 1], AGGLOMERATION_BOND_TYPE, r0[b]));
-    PetscCall(PetscFree2(g, r0));
   }
   PetscFunctionReturn(0);
 }

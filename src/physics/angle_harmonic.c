@@ -32,7 +32,7 @@ PetscErrorCode angle_set_default(sim *s, double k, double theta0_deg) {
   module *m = angle_find(s);
   PetscFunctionBeginUser;
   PetscCheck(m, s->comm, PETSC_ERR_ORDER,
-             "angle_set_default: angle_harmonic is not enabled (call topology_enable)");
+             "angle_set_default: angle_harmonic is not enabled (call solid_modules_enable)");
   angle_data *d = m->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     d->k[t] = k;
@@ -202,8 +202,8 @@ static PetscErrorCode angle_view(module *self, sim *s, PetscViewer v) {
   const angle_data *d = self->data;
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(
-      v, "angle_harmonic: %" PetscInt_FMT " angles, U = k_a (theta - theta0)^2\n",
-      s->topo->n_angles));
+      v, "angle_harmonic: %" PetscInt64_FMT " angles, U = k_a (theta - theta0)^2\n",
+      s->topo->n_angles_global));
   for (PetscInt t = 0; t < s->topo->n_angle_types; t++)
     PetscCall(
         PetscViewerASCIIPrintf(v, "  angle type %" PetscInt_FMT ": k_a = %g J, theta0 = %g deg\n",

@@ -39,6 +39,14 @@ PetscErrorCode bond_setup_k_r0(sim *s, bond_params *p, const char *k_unit) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode bond_claim_scene_types(sim *s, const module *self) {
+  PetscFunctionBeginUser;
+  for (PetscInt ty = 0; ty < s->topo->n_bond_types; ty++)
+    if (!s->topo->bond_owner[ty])
+      PetscCall(topology_claim_bond_type(s->topo, ty, self));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode bond_destroy(module *self) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(self->data));
@@ -57,7 +65,7 @@ PetscErrorCode bond_set_default(sim *s, double k, double r0, double rmax) {
   module *m = bond_find(s);
   PetscFunctionBeginUser;
   PetscCheck(m, s->comm, PETSC_ERR_ORDER,
-             "bond_set_default: no bond module enabled (call topology_enable first)");
+             "bond_set_default: no bond module enabled (call solid_modules_enable first)");
   bond_params *p = m->data;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++) {
     p->k[t] = k;
@@ -107,10 +115,9 @@ PetscErrorCode bond_min_solid_mass(sim *s, double *m) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode topology_enable(sim *s, bond_style style) {
+PetscErrorCode solid_modules_enable(sim *s, bond_style style) {
+  PetscBool include = s->topo ? s->topo->special_include : PETSC_FALSE;
   PetscFunctionBeginUser;
-  if (!s->topo)
-    PetscCall(topology_create(&s->topo));
   PetscOptionsBegin(s->comm, NULL, "Solids: bonds, angles and exclusions", NULL);
   PetscCall(PetscOptionsEnum(
       "-bond_style",
@@ -120,9 +127,11 @@ PetscErrorCode topology_enable(sim *s, bond_style style) {
       "-special_bonds_include",
       "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
       "LAMMPS special_bonds lj/coul 0 0 1 angle yes)",
-      NULL, s->topo->special_include, &s->topo->special_include, NULL));
+      NULL, include, &include, NULL));
   PetscOptionsEnd();
+  /* the bond and angle modules ask for the store (MODULE_NEEDS_BONDS, _ANGLES) */
   PetscCall(modules_enable(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
   PetscCall(modules_enable(s, "angle_harmonic", NULL));
+  s->topo->special_include = include;
   PetscFunctionReturn(0);
 }

@@ -1,5 +1,5 @@
 /* The clot bonds (agglomeration.c): U = K (r - r0_b)^2 for every local bond
- * entry of the topology's run-time type, r0_b the bond's own rest length (its
+ * entry of the bond type the agglomeration module claimed, r0_b the bond's own rest length (its
  * length when it was made, topology bond_r0), so that a new bond starts with
  * zero energy and force. Same arithmetic as bond_harmonic (bond_iact.h). */
 #include <math.h>
@@ -8,14 +8,12 @@
 #include "bond_iact.h"
 #include "virial_iact.h"
 
-PetscErrorCode bond_clot_compute(sim *s, double K) {
+PetscErrorCode bond_clot_compute(sim *s, const void *owner, double K) {
   const topology *t = s->topo;
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  if (t->runtime_type < 0)
-    PetscFunctionReturn(0);
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    if (t->bond_ltype[b] != t->runtime_type)
+    if (t->bond_owner[t->bond_ltype[b]] != owner)
       continue;
     const PetscInt i = t->bond[b][0], j = t->bond[b][1];
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
@@ -30,14 +28,12 @@ PetscErrorCode bond_clot_compute(sim *s, double K) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode bond_clot_virial(sim *s, double K, double (*W)[3]) {
+PetscErrorCode bond_clot_virial(sim *s, const void *owner, double K, double (*W)[3]) {
   const topology *t = s->topo;
   const particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  if (t->runtime_type < 0)
-    PetscFunctionReturn(0);
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    if (t->bond_ltype[b] != t->runtime_type)
+    if (t->bond_owner[t->bond_ltype[b]] != owner)
       continue;
     const PetscInt i = t->bond[b][0], j = t->bond[b][1];
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
@@ -47,14 +43,12 @@ PetscErrorCode bond_clot_virial(sim *s, double K, double (*W)[3]) {
   PetscFunctionReturn(0);
 }
 
-double bond_clot_energy_local(sim *s, double K) {
+double bond_clot_energy_local(sim *s, const void *owner, double K) {
   const topology *t = s->topo;
   const particles *ps = &s->ps;
   double e = 0;
-  if (t->runtime_type < 0)
-    return 0;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    if (t->bond_ltype[b] != t->runtime_type)
+    if (t->bond_owner[t->bond_ltype[b]] != owner)
       continue;
     const PetscInt i = t->bond[b][0], j = t->bond[b][1];
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);

@@ -1,6 +1,7 @@
 /* Module bond_harmonic: U = K (r - r0)^2 per bond (doc/theory.md), K [J/m^2] and r0 [m]
- * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. Bonds of
- * the topology's run-time type (clots, agglomeration.c) are left to bond_clot.c.
+ * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. It claims the
+ * scene's bond types at setup; types another module claimed (the clots',
+ * agglomeration.c) are left to that module.
  * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
 #include <math.h>
 #include "dmhs/sim.h"
@@ -28,6 +29,7 @@ static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
 
 static PetscErrorCode bond_harmonic_setup(module *self, sim *s) {
   PetscFunctionBeginUser;
+  PetscCall(bond_claim_scene_types(s, self));
   PetscCall(bond_setup_k_r0(s, self->data, "J/m^2"));
   PetscFunctionReturn(0);
 }
@@ -45,10 +47,10 @@ static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
   const double *restrict mass = ps->mass;
   const double *restrict K = p->k, *restrict R0 = p->r0;
   double(*restrict a)[2] = ps->a;
-  const PetscInt skip = t->runtime_type;
+  const void *const *restrict owner = t->bond_owner;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
-    if (ty == skip)
+    if (owner[ty] != self) /* another module's bond type (the clots') */
       continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double fr = bond_harmonic_iact(K[ty], R0[ty], sqrt(d[0] * d[0] + d[1] * d[1]));
@@ -71,7 +73,7 @@ static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3])
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (ty == t->runtime_type)
+    if (t->bond_owner[ty] != self)
       continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
@@ -88,7 +90,7 @@ static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) 
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (ty == t->runtime_type)
+    if (t->bond_owner[ty] != self)
       continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
     local += t->bond_weight[b] * bond_harmonic_energy(p->k[ty], p->r0[ty], r);
@@ -114,8 +116,8 @@ static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(
       v,
-      "bond_harmonic: %" PetscInt_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
-      s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
+      "bond_harmonic: %" PetscInt64_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
+      s->topo->n_bonds_global, s->topo->special_include ? "included in" : "excluded from"));
   for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
     PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": K = %g J/m^2, r0 = %g m\n",
                                      t, p->k[t], p->r0[t]));

@@ -50,6 +50,7 @@ static PetscErrorCode bond_nonlinear_setup(module *self, sim *s) {
   bond_params *p = self->data;
   const PetscInt nt = s->topo->n_bond_types;
   PetscFunctionBeginUser;
+  PetscCall(bond_claim_scene_types(s, self));
   PetscCall(bond_setup_k_r0(s, p, "J"));
   PetscCall(bond_check_type_coeffs("-bond_rmax", p->rmax, p->n_rmax, nt));
   for (PetscInt t = 0; t < nt; t++)
@@ -59,12 +60,14 @@ static PetscErrorCode bond_nonlinear_setup(module *self, sim *s) {
 }
 
 /* Largest |x|/r_max over the local bonds, and which bond entry. */
-static double bond_nonlinear_max_stretch(const bond_params *p, const topology *t,
-                                         const particles *ps, PetscInt *which) {
+static double bond_nonlinear_max_stretch(const module *self, const bond_params *p,
+                                         const topology *t, const particles *ps, PetscInt *which) {
   double best = 0;
   *which = -1;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (t->bond_owner[ty] != self)
+      continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
     const double f = fabs(r - p->r0[ty]) / p->rmax[ty];
     if (f > best) {
@@ -97,8 +100,11 @@ static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
   double(*restrict a)[2] = ps->a;
   double worst = 0; /* largest |x|/r_max */
   PetscInt worst_b = -1;
+  const void *const *restrict owner = t->bond_owner;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
+    if (owner[ty] != self) /* another module's bond type */
+      continue;
     const double dd[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r = sqrt(dd[0] * dd[0] + dd[1] * dd[1]);
     const double f = fabs(r - R0[ty]) / L[ty];
@@ -147,6 +153,8 @@ static PetscErrorCode bond_nonlinear_energy_sum(module *self, sim *s, double *e)
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (t->bond_owner[ty] != self)
+      continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
     local += t->bond_weight[b] * bond_nonlinear_energy(p->k[ty], p->r0[ty], p->rmax[ty], r);
   }
@@ -163,6 +171,8 @@ static PetscErrorCode bond_nonlinear_virial(module *self, sim *s, double (*W)[3]
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (t->bond_owner[ty] != self)
+      continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
     const double fr = bond_nonlinear_iact(p->k[ty], p->r0[ty], p->rmax[ty], hypot(d[0], d[1]));
     virial_pair_add(W, i, j, fr, d);
@@ -181,7 +191,7 @@ static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) 
   /* per type, at that type's largest current stretch (rest when it has none here) */
   for (PetscInt ty = 0; ty < s->topo->n_bond_types; ty++)
     local = PetscMin(local, bond_nonlinear_limit(p, ty, 0.0));
-  f_local = bond_nonlinear_max_stretch(p, s->topo, &s->ps, &which);
+  f_local = bond_nonlinear_max_stretch(self, p, s->topo, &s->ps, &which);
   if (which >= 0)
     local = PetscMin(local, bond_nonlinear_limit(p, s->topo->bond_ltype[which], f_local));
   PetscCallMPI(MPI_Allreduce(&local, &limit, 1, MPI_DOUBLE, MPI_MIN, s->comm));
@@ -198,9 +208,9 @@ static PetscErrorCode bond_nonlinear_view(module *self, sim *s, PetscViewer v) {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(
       v,
-      "bond_nonlinear: %" PetscInt_FMT " bonds, U = k_b x^2/(r_max^2 - x^2); warn at 0.95 "
+      "bond_nonlinear: %" PetscInt64_FMT " bonds, U = k_b x^2/(r_max^2 - x^2); warn at 0.95 "
       "r_max, stop at r_max; 1-2/1-3 partners %s pair sums\n",
-      s->topo->n_bonds, s->topo->special_include ? "included in" : "excluded from"));
+      s->topo->n_bonds_global, s->topo->special_include ? "included in" : "excluded from"));
   for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
     PetscCall(PetscViewerASCIIPrintf(
         v, "  bond type %" PetscInt_FMT ": k_b = %g J, r0 = %g m, r_max = %g m\n", t, p->k[t],

@@ -56,6 +56,9 @@ PetscErrorCode modules_enable(sim *s, const char *name, module **out) {
     PetscCheck(strcmp(s->modules[m]->name, name), s->comm, PETSC_ERR_PLIB,
                "module %s enabled twice", name);
   PetscCall(modules_create(name, &s->modules[s->n_modules]));
+  /* a module that asks for bonds or angles gets the store */
+  if ((s->modules[s->n_modules]->needs & (MODULE_NEEDS_BONDS | MODULE_NEEDS_ANGLES)) && !s->topo)
+    PetscCall(topology_create(&s->topo));
   if (out)
     *out = s->modules[s->n_modules];
   s->n_modules++;

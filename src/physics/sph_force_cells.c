@@ -37,7 +37,7 @@
 /* flags of the copy: cells.c's 1 = ghost, 2 = wall, 4 = not liquid (at the build), and the
  * current type */
 #define FL_NO_PAIR  3 /* two ghosts, two walls: no pair (cells.c) */
-#define FL_SOLID    4 /* two non-liquid particles: maybe bonded partners, left out (cells.c) */
+#define FL_SOLID    4 /* two bonded particles: maybe partners, left out (cells.c) */
 #define FL_WALL_NOW 8 /* a wall now: no density diffusion through it */
 
 PetscBool sph_force_cells_available(void) {

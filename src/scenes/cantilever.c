@@ -55,7 +55,7 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
              "-cantilever_n must be >= -cantilever_clamp + 2 (got %" PetscInt_FMT ")", c->st.n);
   PetscCheck(c->st.mass > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-cantilever_mass must be > 0");
   PetscCall(fields_enable("x0")); /* the tip's deflection */
-  PetscCall(topology_enable(s, BOND_HARMONIC));
+  PetscCall(solid_modules_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, CANTILEVER_K, CANTILEVER_R0, 0.5 * CANTILEVER_R0));
   PetscCall(angle_set_default(s, CANTILEVER_KA, 90.0));
   PetscCall(modules_enable(s, "solid_load", &c->load));

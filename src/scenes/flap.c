@@ -87,7 +87,7 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   PetscCall(sph_set_liquid(sph, 2.5 * f->dx, 1000.0, 1.0, 1e-4)); /* h, rho0, c0, nu */
   PetscCall(modules_enable(s, "body_force", &f->body));
   PetscCall(body_force_set_default(f->body, 0.5, 0.0));
-  PetscCall(topology_enable(s, BOND_HARMONIC));
+  PetscCall(solid_modules_enable(s, BOND_HARMONIC));
   /* a soft flap: EI = K dx^3 + 2 k_a dx (doc/theory.md) */
   PetscCall(bond_set_default(s, 2e3, f->dx, 0.5 * f->dx));
   PetscCall(angle_set_default(s, 1e-5, 90.0));

@@ -144,7 +144,7 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscCall(modules_enable(s, "body_force", &c->body));
   PetscCall(body_force_set_default_gravity(c->body, 9.81));
   /* the published membrane is nonlinear (FENE-like) */
-  PetscCall(topology_enable(s, BOND_NONLINEAR));
+  PetscCall(solid_modules_enable(s, BOND_NONLINEAR));
   /* k_b = 1e-4 J, r0 = dx, r_max = 1.8 dx (4.5e-4 m at dx = 2.5e-4 m) */
   PetscCall(bond_set_default(s, 1e-4, c->dx, 1.8 * c->dx));
   PetscCall(angle_set_default(s, 8e-5, 90.0));

@@ -7,7 +7,7 @@ PetscErrorCode solid_strip_build(sim *s, solid_strip *st, PetscInt64 *next_gid) 
   topology *t = s->topo;
   PetscFunctionBeginUser;
   PetscCheck(t, s->comm, PETSC_ERR_ORDER,
-             "solid_strip_build: call topology_enable in the scene's options pass");
+             "solid_strip_build: call solid_modules_enable in the scene's options pass");
   PetscCheck(st->n >= st->n_clamp + 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "a strip needs at least 2 free columns (got %" PetscInt_FMT " columns, %" PetscInt_FMT
              " clamped)",

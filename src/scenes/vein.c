@@ -227,7 +227,7 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCall(modules_enable(s, "body_force", &v->body));
   PetscCall(body_force_set_default(v->body, 0.1, 0.0));
   PetscCall(body_force_set_default_period(v->body, 4.0));
-  PetscCall(topology_enable(s, BOND_HARMONIC));
+  PetscCall(solid_modules_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, 1e6 / (r * r * r), v->dx, 0.5 * v->dx));
   PetscCall(angle_set_default(s, v->ka_ref / r, 90.0));
   PetscCall(modules_enable(s, "repulsion", &v->rep));

@@ -169,7 +169,8 @@ static void new_bond(const double xa[2], const double xb[2], double shift, doubl
   double r0;
   OK(agglomeration_pair(&r, &clot, 1, &cand, 1, &n, pairs, &r0));
   assert_int_equal(n, 1);
-  s->topo->runtime_type = AGGLOMERATION_BOND_TYPE;
+  static const int clot_module = 0; /* any address: the owner of the clot bond type */
+  OK(topology_claim_bond_type(s->topo, AGGLOMERATION_BOND_TYPE, &clot_module));
   OK(topology_add_bond_r0(s->topo, 0, 1, AGGLOMERATION_BOND_TYPE, r0));
   s->ps.type[ib] = PTYPE_CLOT;
   if (shift != 0) { /* both ends' periodic images, as the halo makes them */
@@ -184,8 +185,8 @@ static void new_bond(const double xa[2], const double xb[2], double shift, doubl
   const PetscInt nr = s->ps.n_owned + s->ps.n_ghost;
   for (PetscInt i = 0; i < nr; i++)
     s->ps.a[i][0] = s->ps.a[i][1] = 0;
-  OK(bond_clot_compute(s, 8000));
-  *energy = bond_clot_energy_local(s, 8000);
+  OK(bond_clot_compute(s, &clot_module, 8000));
+  *energy = bond_clot_energy_local(s, &clot_module, 8000);
   *amax = 0;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
     *amax = PetscMax(*amax, hypot(s->ps.a[i][0], s->ps.a[i][1]));

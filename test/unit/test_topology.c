@@ -1,4 +1,5 @@
-/* Topology: bonds by gid resolved across a periodic boundary (nearest image,
+/* Topology: any particle type as a bond end, bond types owned by modules; bonds by gid
+ * resolved across a periodic boundary (nearest image,
  * force on both owned ends, energy counted once); bonded 1-2 and 1-3 pairs
  * left out of the pair list unless -special_bonds_include; an isolated
  * bonded structure under velocity Verlet conserves energy (bounded drift
@@ -147,6 +148,45 @@ static void conservation(const char *bond_module, double k, double rmax, double 
   fixture_destroy(&s);
 }
 
+/* Any particle type may be a bond end: a liquid-solid bond gets its force and its pair
+ * leaves the pair list; a bond type claimed by another module is left to that module
+ * (the bond module computes no force for it), and a type claimed twice is an error. */
+static void test_any_type_and_owners(void **state) {
+  (void)state;
+  const double zero[2] = {0, 0}, K = 1e6, r0 = 1.2e-4, m = 2e-5;
+  sim *s = fixture_create(1e-3, 1e-3, PETSC_FALSE);
+  module *rep;
+  OK(modules_enable(s, "bond_harmonic", NULL));
+  OK(modules_enable(s, "repulsion", &rep));
+  OK(repulsion_set_default(rep, 4e-4, 1.5e-4, 4, 2));
+  OK(bond_set_default(s, K, r0, 0));
+  const double xa[2] = {0.4e-3, 0.5e-3}, xb[2] = {0.5e-3, 0.5e-3}, xc[2] = {0.6e-3, 0.5e-3};
+  OK(particles_add_owned(&s->ps, 0, PTYPE_FLUID, xa, zero, m, 1000, NULL));
+  OK(particles_add_owned(&s->ps, 1, PTYPE_SOLID, xb, zero, m, 1000, NULL));
+  OK(particles_add_owned(&s->ps, 2, PTYPE_SOLID, xc, zero, m, 1000, NULL));
+  OK(topology_add_bond(s->topo, 0, 1, 0)); /* liquid - solid */
+  static const int other_module = 0;       /* stands for a clot-like module */
+  OK(topology_claim_bond_type(s->topo, 3, &other_module));
+  OK(topology_add_bond(s->topo, 1, 2, 3)); /* its type: no force from bond_harmonic */
+  fixture_setup(s);
+  const double F = 2 * K * (r0 - 1e-4); /* pushes 0 to -x, 1 to +x */
+  assert_true(fabs(s->ps.a[0][0] * m + F) < 1e-9 * F);
+  assert_true(fabs(s->ps.a[2][0]) < 1e-9 * F / m); /* only repulsion could act, and 1-2 are
+                                                       bonded: excluded */
+  for (PetscInt k = 0; k < s->cel.n_pairs; k++) {
+    const PetscInt64 gi = s->ps.gid[s->cel.pair_i[k]], gj = s->ps.gid[s->cel.pair_j[k]];
+    assert_false((gi == 0 && gj == 1) || (gi == 1 && gj == 0));
+    assert_false((gi == 1 && gj == 2) || (gi == 2 && gj == 1));
+  }
+  /* a second module claiming the type: refused */
+  static const int third = 0;
+  OK(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  const PetscErrorCode r = topology_claim_bond_type(s->topo, 3, &third);
+  OK(PetscPopErrorHandler());
+  assert_int_equal(r, PETSC_ERR_ARG_INCOMP);
+  fixture_destroy(&s);
+}
+
 static void test_conservation_harmonic(void **state) {
   (void)state;
   conservation("bond_harmonic", 1e6, 0, 0.01, 1);
@@ -170,7 +210,7 @@ int main(int argc, char **argv) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_periodic_bond),         cmocka_unit_test(test_exclusions),
       cmocka_unit_test(test_conservation_harmonic), cmocka_unit_test(test_conservation_nonlinear),
-      cmocka_unit_test(test_conservation_substeps),
+      cmocka_unit_test(test_conservation_substeps), cmocka_unit_test(test_any_type_and_owners),
   };
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(events_register());
