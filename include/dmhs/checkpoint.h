@@ -13,8 +13,9 @@
  *                      angle_id, each entry once (rows of the rank owning its first
  *                      end); attributes next_bond_id, next_angle_id
  *   /modules/<name>/   private state of modules with checkpoint hooks
- *   /scene/            private state of the scene (e.g. error reports done)
- * Module and scene state is replicated (the same on every rank): hooks store
+ *   /diagnostics/<name>/  private state of diagnostics with checkpoint hooks
+ *                      (counters, histories, error reports done)
+ * Module and diagnostic state is replicated (the same on every rank): hooks store
  * named arrays with checkpoint_put_* and read them back with checkpoint_get_*.
  * Every dataset has an attribute "checksum" (uint64 stored as int64): the sum
  * modulo 2^64 over its rows of FNV-1a 64 of (global row index as 8 bytes little
@@ -29,11 +30,12 @@ struct sim;
 #define CHECKPOINT_MAGIC "DMHS-CHECKPOINT"
 /* 2: x_build (neighbour lists with a skin); 3: physics_options, per-dataset checksums;
  * 4: dt_anchor_t, dt_anchor_step, solid_substeps (dt and the sub-steps change during the run);
- * 5: the tag split into load / segment / tracer; 6: /topology (the clot bonds leave the
- * agglomeration module's state) */
-#define CHECKPOINT_FORMAT_VERSION 6
+ * 5: the tag split into load / segment / tracer;
+ * 6: /diagnostics/<name>/, one group per diagnostic, instead of the scene's /scene/;
+ * 7: /topology (the bond/angle store; the clot bonds leave the agglomeration module's state) */
+#define CHECKPOINT_FORMAT_VERSION 7
 
-/* Opaque handle given to the modules' and scene's checkpoint hooks. */
+/* Opaque handle given to the modules' and diagnostics' checkpoint hooks. */
 typedef struct checkpoint_io checkpoint_io;
 
 PetscErrorCode checkpoint_put_reals(checkpoint_io *io, const char *name, const double *v,
@@ -47,7 +49,7 @@ PetscErrorCode checkpoint_get_ints(checkpoint_io *io, const char *name, PetscInt
 
 /* Writes the current state to path atomically. Collective. */
 PetscErrorCode checkpoint_write(struct sim *s, const char *path);
-/* Replaces the particle state, run control and module / scene state by path's.
+/* Replaces the particle state, run control and module / diagnostic state by path's.
  * The scene must already be built with the same options (same particle count).
  * Ghosts are dropped; the caller rebuilds them. Collective. */
 PetscErrorCode checkpoint_read(struct sim *s, const char *path);

@@ -13,34 +13,20 @@
 #include <petscsys.h>
 
 struct sim;
-struct checkpoint_io;
 typedef double (*errors_exact_fn)(double y, double t, const void *ctx);
 
 #define ERRORS_MAX_REPORTS 16
-typedef struct errors {
-  errors_exact_fn exact;
-  const void *ctx;
-  double v_ref; /* normalisation [m/s], fixed for the run */
-  FILE *csv;    /* rank 0 only */
-  PetscInt n_reports, next_report;
-  double report_t[ERRORS_MAX_REPORTS];
-  double reached_t[ERRORS_MAX_REPORTS], l2[ERRORS_MAX_REPORTS], linf[ERRORS_MAX_REPORTS],
-      wall_s[ERRORS_MAX_REPORTS];
-} errors;
+/* The report times [s], increasing. */
+typedef struct errors_times {
+  PetscInt n;
+  double t[ERRORS_MAX_REPORTS];
+} errors_times;
 
-/* Reads -error_report_times (a list of times [s]). */
-PetscErrorCode errors_set_from_options(errors *e, struct sim *s);
-PetscErrorCode errors_setup(errors *e, struct sim *s, errors_exact_fn exact, const void *ctx,
-                            double v_ref);
-/* Per step: appends a row at output times, records and writes profiles at report times. */
-PetscErrorCode errors_on_step(errors *e, struct sim *s);
-/* Prints the errors at the report times reached and the wall-clock time. */
-PetscErrorCode errors_report(errors *e, struct sim *s);
-PetscErrorCode errors_destroy(errors *e);
-/* Checkpoint hooks: the reports done so far; on restart error.csv is continued. */
-PetscErrorCode errors_checkpoint_write(errors *e, struct checkpoint_io *io);
-PetscErrorCode errors_checkpoint_read(errors *e, struct sim *s, struct checkpoint_io *io);
-/* Normalised RMS and max error over owned fluid particles, reduced over ranks. */
-PetscErrorCode errors_compute(errors *e, struct sim *s, double *l2, double *linf);
+/* Reads -error_report_times (a list of times [s]; default 0.01, 0.1, 1 s). */
+PetscErrorCode errors_set_from_options(errors_times *times, struct sim *s);
+/* Registers the diagnostic "errors" (error.csv, profiles, the end-of-run table) against
+ * exact(y, t, ctx), normalised by v_ref [m/s] > 0; ctx must outlive the run. */
+PetscErrorCode errors_register(struct sim *s, const errors_times *times, errors_exact_fn exact,
+                               const void *ctx, double v_ref);
 
 #endif

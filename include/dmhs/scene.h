@@ -1,26 +1,24 @@
-/* A scene builds one case: geometry, the modules it needs and its diagnostics. */
+/* A scene builds one case: geometry, the modules it needs and the diagnostics
+ * it registers (diagnostic.h), each with the parameters it measures with. */
 #ifndef DMHS_SCENE_H
 #define DMHS_SCENE_H
 #include <petscsys.h>
 
 struct sim;
-struct checkpoint_io;
 
 typedef struct scene scene;
 struct scene {
   const char *name;
+  /* Reads the scene's options, sets module defaults and enables modules (modules_enable). */
   PetscErrorCode (*set_from_options)(scene *self, struct sim *s);
-  /* Creates domain, particles and enables modules (modules_enable). */
+  /* Creates domain and particles and registers the diagnostics (diagnostics_add). */
   PetscErrorCode (*build)(scene *self, struct sim *s);
-  /* Called after every completed step (and once before step 1 with step = 0). */
-  PetscErrorCode (*diagnose)(scene *self, struct sim *s);
-  /* End-of-run report. */
-  PetscErrorCode (*finish)(scene *self, struct sim *s);
+  /* Optional: changes the state after every step, after the modules' post_step and
+   * before the diagnostics sample it (the intestine parks the liquid past its weir).
+   * It holds no state of its own that a restart would need. Collective. */
+  PetscErrorCode (*post_step)(scene *self, struct sim *s);
   PetscErrorCode (*destroy)(scene *self);
   void *data;
-  /* Optional: save / restore the scene's diagnostics state (checkpoint.h). */
-  PetscErrorCode (*checkpoint_write)(scene *self, struct sim *s, struct checkpoint_io *io);
-  PetscErrorCode (*checkpoint_read)(scene *self, struct sim *s, struct checkpoint_io *io);
 };
 
 #endif

@@ -1,5 +1,5 @@
 /* struct sim owns everything: run control, domain, particles, ghosts, cells,
- * the enabled modules and the scene. The run (setup, the step loop) is the
+ * the enabled modules, the scene and its diagnostics. The run (setup, the step loop) is the
  * driver's (src/driver/run.c, driver.h); neighbour handling is neighbours.c. */
 #ifndef DMHS_SIM_H
 #define DMHS_SIM_H
@@ -10,6 +10,7 @@
 #include "dmhs/cells.h"
 #include "dmhs/module.h"
 #include "dmhs/scene.h"
+#include "dmhs/diagnostic.h"
 #include "dmhs/sph.h"
 #include "dmhs/partition.h" /* mpi */
 #include "dmhs/migrate.h"   /* mpi */
@@ -64,6 +65,9 @@ typedef struct sim {
   module *modules[SIM_MAX_MODULES];
   int n_modules;
   scene *scn;
+  /* what the scene measures, sampled after the steps of each one's schedule (diagnostic.h) */
+  diagnostic *diagnostics[SIM_MAX_DIAGNOSTICS];
+  int n_diagnostics;
 
   /* timing */
   double loop_start_wtime, loop_seconds;

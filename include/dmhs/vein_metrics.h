@@ -1,13 +1,13 @@
-/* Diagnostics of the deep-vein valve (src/diag/vein_metrics.c): an object
- * the vein scene creates with the geometry it built and calls after every
- * step. It owns <output_dir>/vein.csv, vein-sinus.csv and vein-summary.csv,
- * the crossing count and the measurement point (doc/user-guide.md, "Scene
- * vein"; definitions in doc/theory.md, "Vein metrics"). */
+/* Diagnostics of the deep-vein valve, registered by the vein scene with the
+ * geometry it built: "vein_crossings" (src/diag/vein_crossings.c), the check
+ * that no liquid crosses a leaflet, every crossing_interval steps and at output
+ * times; "vein" (src/diag/vein_metrics.c), at output times, owning
+ * <output_dir>/vein.csv, vein-sinus.csv and vein-summary.csv and the
+ * measurement point (doc/user-guide.md, "Scene vein"; definitions in
+ * doc/theory.md, "Vein metrics"). */
 #ifndef DMHS_VEIN_METRICS_H
 #define DMHS_VEIN_METRICS_H
 #include "dmhs/sim.h"
-
-struct checkpoint_io;
 
 /* Fluid that starts in the sinus (between a leaflet and the sinus wall). */
 #define VEIN_TRACER_SINUS 1
@@ -30,17 +30,13 @@ typedef struct vein_layout {
   double leaflet_length, g0, ka_ref;
 } vein_layout;
 
-typedef struct vein_metrics vein_metrics;
-
-PetscErrorCode vein_metrics_create(sim *s, const vein_layout *layout, vein_metrics **out);
-/* After every step (and at step 0): crossings every crossing_interval steps;
- * stress fields, CSV rows and the measurement point at output times. */
-PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s);
-/* End of the run: summary (time-averaged displacement and per-cycle peak
- * stress with standard deviations, peak inlet velocities, crossings). */
-PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s);
-PetscErrorCode vein_metrics_checkpoint_write(vein_metrics *v, struct checkpoint_io *io);
-PetscErrorCode vein_metrics_checkpoint_read(vein_metrics *v, sim *s, struct checkpoint_io *io);
-PetscErrorCode vein_metrics_destroy(vein_metrics **v);
+/* Registers "vein_crossings" (lay->crossing_interval >= 1). */
+PetscErrorCode vein_crossings_register(sim *s, const vein_layout *lay, diagnostic **out);
+/* The crossings counted so far, over all ranks. Collective. */
+PetscErrorCode vein_crossings_total(const diagnostic *crossings, sim *s, PetscInt64 *total);
+/* Registers "vein"; its rows report the count of `crossings`. At the end: the
+ * summary (time-averaged displacement and per-cycle peak stress with standard
+ * deviations, peak inlet velocities, crossings). */
+PetscErrorCode vein_metrics_register(sim *s, const vein_layout *lay, const diagnostic *crossings);
 
 #endif

@@ -1,4 +1,6 @@
-/* Error of v_x against an exact solution, as the run goes (see errors.h). */
+/* The diagnostic "errors": v_x against an exact solution, as the run goes (see
+ * errors.h). Samples at the output times after step 0 (a row of error.csv) and
+ * at the report times (a profile and a line of the end-of-run table). */
 #include <math.h>
 #include <errno.h>
 #include <stdlib.h>
@@ -8,28 +10,39 @@
 #include "dmhs/gather.h"
 #include "dmhs/checkpoint.h"
 
-PetscErrorCode errors_set_from_options(errors *e, sim *s) {
+typedef struct errors {
+  errors_exact_fn exact;
+  const void *ctx;
+  double v_ref; /* normalisation [m/s], fixed for the run */
+  FILE *csv;    /* rank 0 only */
+  PetscInt n_reports, next_report;
+  double report_t[ERRORS_MAX_REPORTS];
+  double reached_t[ERRORS_MAX_REPORTS], l2[ERRORS_MAX_REPORTS], linf[ERRORS_MAX_REPORTS],
+      wall_s[ERRORS_MAX_REPORTS];
+} errors;
+
+PetscErrorCode errors_set_from_options(errors_times *times, sim *s) {
   PetscInt n = ERRORS_MAX_REPORTS;
   PetscBool set;
   PetscFunctionBeginUser;
-  if (e->n_reports == 0) {
-    e->report_t[0] = 0.01;
-    e->report_t[1] = 0.1;
-    e->report_t[2] = 1.0;
-    e->n_reports = 3;
+  if (times->n == 0) {
+    times->t[0] = 0.01;
+    times->t[1] = 0.1;
+    times->t[2] = 1.0;
+    times->n = 3;
   }
   PetscOptionsBegin(s->comm, NULL, "Error against the series solution", NULL);
   PetscCall(PetscOptionsRealArray("-error_report_times",
                                   "Times at which errors and profiles are reported [s]", NULL,
-                                  e->report_t, &n, &set));
+                                  times->t, &n, &set));
   PetscOptionsEnd();
   if (set)
-    e->n_reports = n;
-  for (PetscInt k = 0; k < e->n_reports; k++)
-    PetscCheck(e->report_t[k] > 0 && (k == 0 || e->report_t[k] > e->report_t[k - 1]), s->comm,
+    times->n = n;
+  for (PetscInt k = 0; k < times->n; k++)
+    PetscCheck(times->t[k] > 0 && (k == 0 || times->t[k] > times->t[k - 1]), s->comm,
                PETSC_ERR_ARG_OUTOFRANGE,
                "-error_report_times must be positive and increasing (entry %d = %g)", (int)k,
-               e->report_t[k]);
+               times->t[k]);
   PetscFunctionReturn(0);
 }
 
@@ -42,8 +55,8 @@ static PetscErrorCode errors_profile_path(const sim *s, double t, char *path, si
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx,
-                            double v_ref) {
+static PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void *ctx,
+                                   double v_ref) {
   char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   PetscCheck(v_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -72,7 +85,8 @@ PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, const void
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
+/* Normalised RMS and max error over owned fluid particles, reduced over ranks. */
+static PetscErrorCode errors_compute(errors *e, sim *s, double *l2, double *linf) {
   const particles *ps = &s->ps;
   double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
@@ -134,13 +148,22 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_on_step(errors *e, sim *s) {
-  const double half = 0.5 * s->dt;
-  const PetscBool output_step =
-      s->step > 0 && s->t >= s->next_output_t - half ? PETSC_TRUE : PETSC_FALSE;
-  const PetscBool report_step =
-      e->next_report < e->n_reports && s->t >= e->report_t[e->next_report] - half ? PETSC_TRUE
-                                                                                  : PETSC_FALSE;
+/* The next report time is reached (within dt/2). */
+static PetscBool errors_report_due(const errors *e, const sim *s) {
+  return e->next_report < e->n_reports && s->t >= e->report_t[e->next_report] - 0.5 * s->dt
+             ? PETSC_TRUE
+             : PETSC_FALSE;
+}
+
+static PetscBool errors_due(const diagnostic *self, const sim *s) {
+  return errors_report_due(self->data, s);
+}
+
+/* A row at output times (the schedule), a profile at report times (errors_due). */
+static PetscErrorCode errors_sample(diagnostic *self, sim *s) {
+  errors *e = self->data;
+  const PetscBool output_step = s->step > 0 && diagnostic_output_time(s) ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool report_step = errors_report_due(e, s);
   double l2, linf;
   PetscFunctionBeginUser;
   if (!output_step && !report_step)
@@ -164,7 +187,9 @@ PetscErrorCode errors_on_step(errors *e, sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_report(errors *e, sim *s) {
+/* The errors at the report times reached and the wall-clock time. */
+static PetscErrorCode errors_finish(diagnostic *self, sim *s) {
+  errors *e = self->data;
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(
       s->comm, "Error of v_x against the series solution (normalised by %.4g m/s):\n", e->v_ref));
@@ -180,9 +205,12 @@ PetscErrorCode errors_report(errors *e, sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_checkpoint_write(errors *e, checkpoint_io *io) {
+/* The reports done so far; on restart error.csv is continued. */
+static PetscErrorCode errors_checkpoint_write(diagnostic *self, sim *s, checkpoint_io *io) {
+  errors *e = self->data;
   const PetscInt64 next = e->next_report;
   PetscFunctionBeginUser;
+  (void)s;
   PetscCall(checkpoint_put_ints(io, "errors_next_report", &next, 1));
   PetscCall(checkpoint_put_reals(io, "errors_reached_t", e->reached_t, e->next_report));
   PetscCall(checkpoint_put_reals(io, "errors_l2", e->l2, e->next_report));
@@ -226,7 +254,8 @@ static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_checkpoint_read(errors *e, sim *s, checkpoint_io *io) {
+static PetscErrorCode errors_checkpoint_read(diagnostic *self, sim *s, checkpoint_io *io) {
+  errors *e = self->data;
   PetscInt64 next;
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_ints(io, "errors_next_report", &next, 1));
@@ -245,12 +274,38 @@ PetscErrorCode errors_checkpoint_read(errors *e, sim *s, checkpoint_io *io) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode errors_destroy(errors *e) {
+static PetscErrorCode errors_destroy(diagnostic *self) {
+  errors *e = self->data;
   PetscFunctionBeginUser;
   if (e->csv) {
     PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
                "closing error.csv failed");
     e->csv = NULL;
   }
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode errors_register(sim *s, const errors_times *times, errors_exact_fn exact,
+                               const void *ctx, double v_ref) {
+  diagnostic *d;
+  errors *e;
+  PetscFunctionBeginUser;
+  PetscCall(diagnostic_create("errors", &d));
+  PetscCall(PetscNew(&e));
+  d->data = e;
+  d->output = "error.csv";
+  d->when.at_outputs = PETSC_TRUE;
+  d->when.not_at_start = PETSC_TRUE; /* the error of the exact initial state says nothing */
+  d->due = errors_due;
+  d->sample = errors_sample;
+  d->finish = errors_finish;
+  d->destroy = errors_destroy;
+  d->checkpoint_write = errors_checkpoint_write;
+  d->checkpoint_read = errors_checkpoint_read;
+  PetscCall(diagnostics_add(s, d));
+  e->n_reports = times->n;
+  PetscCall(PetscArraycpy(e->report_t, times->t, times->n));
+  PetscCall(errors_setup(e, s, exact, ctx, v_ref));
   PetscFunctionReturn(0);
 }

@@ -1,9 +1,5 @@
-/* Diagnostics of the deep-vein valve (header: vein_metrics.h).
- *
- * Every -vein_crossing_interval steps: fluid particles beside a leaflet (within
- * 3 dx of its mid-line, between its root and tip) record which side they are
- * on in the optional field `side` (+-1 upper, +-2 lower leaflet); a particle
- * seen on the other side of the same leaflet counts as a crossing (must stay 0).
+/* The diagnostic "vein" of the deep-vein valve (header: vein_metrics.h; the
+ * crossings are counted by "vein_crossings", vein_crossings.c).
  *
  * At every output time (and t = 0), a row of <output_dir>/vein.csv:
  *   t; u_mean, u_centre: the liquid's mean v_x over the cross-section at the
@@ -37,17 +33,17 @@
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
 #include "dmhs/liquid_state.h"
+#include "vein_leaflets.h"
 
 #define VEIN_FIXED 1e-12 /* fixed-point unit of velocity sums [m/s] */
 
-struct vein_metrics {
+typedef struct vein_metrics {
   vein_layout lay;
-  PetscInt n_leaf[2];  /* particles per leaflet (2 x columns) */
-  double (*leaf_x)[2]; /* every leaflet particle, replicated: [leaflet 0 | leaflet 1] */
-  PetscInt64 crossings_local;
-  PetscInt64 crossings; /* over all ranks, at the last output */
-  PetscInt64 probe_gid; /* -1 until chosen */
-  PetscInt next_cycle;  /* next cycle whose sinus rows are due */
+  vein_leaflets leaves;
+  const diagnostic *crossings_check; /* "vein_crossings" */
+  PetscInt64 crossings;              /* its count over all ranks, at the last output */
+  PetscInt64 probe_gid;              /* -1 until chosen */
+  PetscInt next_cycle;               /* next cycle whose sinus rows are due */
   /* history (replicated) of the measurement point, for the statistics */
   PetscInt n_hist, cap_hist;
   double (*hist)[3]; /* per output row after the choice: t, |sigma|, |x - x0| */
@@ -55,164 +51,7 @@ struct vein_metrics {
   double u_mean_peak1, u_centre_peak1, u_mean_peak, u_centre_peak;
   double gap_min, gap_max, rho_dev_max, mach_max;
   FILE *csv, *sinus;
-};
-
-PetscErrorCode vein_metrics_create(sim *s, const vein_layout *lay, vein_metrics **out) {
-  vein_metrics *v;
-  PetscFunctionBeginUser;
-  PetscCall(PetscNew(&v));
-  *out = v;
-  v->lay = *lay;
-  for (int k = 0; k < 2; k++)
-    v->n_leaf[k] = 2 * lay->leaflet[k].n_columns;
-  PetscCall(PetscMalloc1(v->n_leaf[0] + v->n_leaf[1], &v->leaf_x));
-  v->probe_gid = -1;
-  v->gap_min = INFINITY;
-  v->gap_max = -INFINITY;
-  (void)s;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode vein_metrics_destroy(vein_metrics **vp) {
-  vein_metrics *v = *vp;
-  PetscFunctionBeginUser;
-  if (!v)
-    PetscFunctionReturn(0);
-  if (v->csv)
-    fclose(v->csv);
-  if (v->sinus)
-    fclose(v->sinus);
-  PetscCall(PetscFree(v->leaf_x));
-  PetscCall(PetscFree(v->hist));
-  PetscCall(PetscFree(*vp));
-  PetscFunctionReturn(0);
-}
-
-/* Leaflet particle k of leaflet `which` (k = 2 c + l), or -1 for another gid. */
-static PetscInt vein_leaf_index(const vein_metrics *v, PetscInt64 gid, int *which) {
-  for (int w = 0; w < 2; w++) {
-    const PetscInt64 k = gid - v->lay.leaflet[w].first_gid;
-    if (k >= 0 && k < v->n_leaf[w]) {
-      *which = w;
-      return (PetscInt)k + (w ? v->n_leaf[0] : 0);
-    }
-  }
-  return -1;
-}
-
-/* Every leaflet particle's position on every rank: owners fill, one exact SUM. */
-static PetscErrorCode vein_gather_leaflets(vein_metrics *v, sim *s) {
-  const PetscInt n = v->n_leaf[0] + v->n_leaf[1];
-  PetscFunctionBeginUser;
-  PetscCall(PetscArrayzero(v->leaf_x, n));
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    int w;
-    const PetscInt k = vein_leaf_index(v, s->ps.gid[i], &w);
-    if (k < 0)
-      continue;
-    v->leaf_x[k][0] = s->ps.x[i][0];
-    v->leaf_x[k][1] = s->ps.x[i][1];
-  }
-  PetscCallMPI(
-      MPI_Allreduce(MPI_IN_PLACE, v->leaf_x, (PetscMPIInt)(2 * n), MPI_DOUBLE, MPI_SUM, s->comm));
-  PetscFunctionReturn(0);
-}
-
-/* Mid-point of column c of leaflet w. */
-static void vein_column_mid(const vein_metrics *v, int w, PetscInt c, double m[2]) {
-  const double(*x)[2] = v->leaf_x + (w ? v->n_leaf[0] : 0);
-  m[0] = 0.5 * (x[2 * c][0] + x[2 * c + 1][0]);
-  m[1] = 0.5 * (x[2 * c][1] + x[2 * c + 1][1]);
-}
-
-/* Side of leaflet w a point is on (+-1), 0 when not beside it: nearest column
- * mid-point c (coarse search every 4th column, then +-4), local tangent from
- * columns c-1 .. c+1, within dx along it and 3 dx across. */
-/* Updates (best, cb) with the columns lo, lo + step, ... <= hi of leaflet w
- * whose mid-point is nearer to p (squared distance, minimum image). */
-static void vein_nearest_column(const vein_metrics *v, const domain *dom, int w, const double p[2],
-                                PetscInt lo, PetscInt hi, PetscInt step, double *best,
-                                PetscInt *cb) {
-  for (PetscInt c = lo; c <= hi; c += step) {
-    double m[2], d[2];
-    vein_column_mid(v, w, c, m);
-    d[0] = p[0] - m[0];
-    d[1] = p[1] - m[1];
-    domain_min_image(dom, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1];
-    if (r2 < *best) {
-      *best = r2;
-      *cb = c;
-    }
-  }
-}
-
-static int vein_side_of(const vein_metrics *v, const domain *dom, int w, const double p[2]) {
-  const PetscInt nc = v->lay.leaflet[w].n_columns;
-  const double dx = v->lay.dx;
-  double best = INFINITY, d[2];
-  PetscInt cb = -1;
-  vein_nearest_column(v, dom, w, p, 0, nc - 1, 4, &best, &cb);
-  if (best > 25 * dx * dx + 16 * dx * dx)
-    return 0; /* farther than ~6.4 dx from every 4th column */
-  vein_nearest_column(v, dom, w, p, PetscMax(cb - 4, 0), PetscMin(cb + 4, nc - 1), 1, &best, &cb);
-  double ma[2], mb[2], mc[2];
-  vein_column_mid(v, w, PetscMax(cb - 1, 0), ma);
-  vein_column_mid(v, w, PetscMin(cb + 1, nc - 1), mb);
-  vein_column_mid(v, w, cb, mc);
-  double t[2] = {mb[0] - ma[0], mb[1] - ma[1]};
-  const double tl = hypot(t[0], t[1]);
-  t[0] /= tl;
-  t[1] /= tl;
-  d[0] = p[0] - mc[0];
-  d[1] = p[1] - mc[1];
-  domain_min_image(dom, d);
-  const double along = d[0] * t[0] + d[1] * t[1], across = d[0] * t[1] - d[1] * t[0];
-  if (fabs(across) >= 3 * dx)
-    return 0;
-  if ((cb == 0 && along < 0) || (cb == nc - 1 && along > 0) || fabs(along) > dx)
-    return 0;
-  return across > 0 ? 1 : -1;
-}
-
-static PetscErrorCode vein_check_crossings(vein_metrics *v, sim *s, PetscBool count) {
-  particles *ps = &s->ps;
-  double box[2][4]; /* per leaflet: centre x, y and half-widths, 4 dx beyond its particles */
-  PetscFunctionBeginUser;
-  PetscCall(vein_gather_leaflets(v, s));
-  for (int w = 0; w < 2; w++) {
-    const double(*x)[2] = v->leaf_x + (w ? v->n_leaf[0] : 0);
-    double lo[2] = {x[0][0], x[0][1]}, hi[2] = {x[0][0], x[0][1]};
-    for (PetscInt k = 1; k < v->n_leaf[w]; k++)
-      for (int d = 0; d < 2; d++) {
-        lo[d] = PetscMin(lo[d], x[k][d]);
-        hi[d] = PetscMax(hi[d], x[k][d]);
-      }
-    for (int d = 0; d < 2; d++) {
-      box[w][d] = 0.5 * (lo[d] + hi[d]);
-      box[w][2 + d] = 0.5 * (hi[d] - lo[d]) + 4 * v->lay.dx;
-    }
-  }
-  for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_FLUID)
-      continue;
-    PetscInt now = 0;
-    for (int w = 0; w < 2 && !now; w++) {
-      /* only particles near the leaflet can be beside it: a cheap box test first */
-      double d[2] = {ps->x[i][0] - box[w][0], ps->x[i][1] - box[w][1]};
-      domain_min_image(&s->dom, d);
-      if (fabs(d[0]) > box[w][2] || fabs(d[1]) > box[w][3])
-        continue;
-      const int sd = vein_side_of(v, &s->dom, w, ps->x[i]);
-      if (sd)
-        now = (w + 1) * sd;
-    }
-    if (count && now && ps->side[i] == -now)
-      v->crossings_local++;
-    ps->side[i] = now;
-  }
-  PetscFunctionReturn(0);
-}
+} vein_metrics;
 
 /* Inlet station: fixed-point sums of v_x over the cross-section and near the axis. */
 static PetscErrorCode vein_station(vein_metrics *v, sim *s, double *u_mean, double *u_centre) {
@@ -245,7 +84,7 @@ static PetscErrorCode vein_station(vein_metrics *v, sim *s, double *u_mean, doub
 static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, PetscInt64 *gid) {
   const particles *ps = &s->ps;
   const double dx = v->lay.dx, reach2 = 4 * dx * dx;
-  const PetscInt n = v->n_leaf[0] + v->n_leaf[1];
+  const PetscInt n = v->leaves.n_leaf[0] + v->leaves.n_leaf[1];
   struct {
     double value;
     int gid;
@@ -259,7 +98,7 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
     double best = INFINITY;
     PetscInt kb = -1;
     for (PetscInt k = 0; k < n; k++) {
-      double d[2] = {ps->x[i][0] - v->leaf_x[k][0], ps->x[i][1] - v->leaf_x[k][1]};
+      double d[2] = {ps->x[i][0] - v->leaves.x[k][0], ps->x[i][1] - v->leaves.x[k][1]};
       if (fabs(d[1]) > 3 * dx)
         continue;
       domain_min_image(&s->dom, d);
@@ -271,8 +110,8 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
     }
     if (kb < 0 || best >= reach2)
       continue;
-    const int w = kb >= v->n_leaf[0];
-    const PetscInt local = kb - (w ? v->n_leaf[0] : 0);
+    const int w = kb >= v->leaves.n_leaf[0];
+    const PetscInt local = kb - (w ? v->leaves.n_leaf[0] : 0);
     if (local % 2 != v->lay.leaflet[w].sinus_layer || local < 2)
       continue; /* the sinus face, not the clamp */
     if (ps->stress_mag[i] > mine.value ||
@@ -365,15 +204,14 @@ static void vein_csv_real(char *buf, size_t len, PetscBool have, double x) {
     buf[0] = 0; /* empty cell, never NaN */
 }
 
-PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
-  const PetscBool output =
-      s->step == 0 || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
+/* At output times (the schedule). */
+static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
+  vein_metrics *v = self->data;
   PetscFunctionBeginUser;
-  if (s->step % v->lay.crossing_interval == 0 || output)
-    PetscCall(vein_check_crossings(v, s, s->step > 0 ? PETSC_TRUE : PETSC_FALSE));
   /* a restarted run continues with the next output time: its step-0 state was written */
-  if (!output || (s->io.restarted && s->t <= s->io.restart_t + 0.5 * s->dt))
+  if (s->io.restarted && s->t <= s->io.restart_t + 0.5 * s->dt)
     PetscFunctionReturn(0);
+  PetscCall(vein_leaflets_gather(&v->leaves, s));
   PetscCall(stress_compute(s));
   double u_mean = 0, u_centre = 0, peak = 0, probe_stress = 0, probe_disp = 0, rho_dev = 0,
          mach = 0, tip[2][2];
@@ -381,9 +219,9 @@ PetscErrorCode vein_metrics_diagnose(vein_metrics *v, sim *s) {
   PetscCall(vein_station(v, s, &u_mean, &u_centre));
   PetscCall(vein_sinus_peak(v, s, &peak, &peak_gid));
   PetscCall(liquid_state_bounds(s, &rho_dev, &mach));
-  PetscCallMPI(MPI_Allreduce(&v->crossings_local, &v->crossings, 1, MPIU_INT64, MPI_SUM, s->comm));
+  PetscCall(vein_crossings_total(v->crossings_check, s, &v->crossings));
   for (int w = 0; w < 2; w++)
-    vein_column_mid(v, w, v->lay.leaflet[w].n_columns - 1, tip[w]);
+    vein_leaflets_column_mid(&v->leaves, w, v->lay.leaflet[w].n_columns - 1, tip[w]);
   double dtip[2] = {tip[0][0] - tip[1][0], tip[0][1] - tip[1][1]};
   domain_min_image(&s->dom, dtip);
   const double gap = hypot(dtip[0], dtip[1]);
@@ -452,7 +290,10 @@ static void vein_mean_std(const double *x, PetscInt n, PetscInt stride, double *
   *std = n > 1 ? sqrt(q / (n - 1)) : (n == 1 ? 0 : NAN);
 }
 
-PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
+/* End of the run: summary (time-averaged displacement and per-cycle peak
+ * stress with standard deviations, peak inlet velocities, crossings). */
+static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
+  vein_metrics *v = self->data;
   const double T = v->lay.period_T;
   double disp_mean, disp_std, peak_mean = NAN, peak_std = NAN, *peaks;
   PetscInt n_cycles = 0;
@@ -538,11 +379,13 @@ PetscErrorCode vein_metrics_finish(vein_metrics *v, sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode vein_metrics_checkpoint_write(vein_metrics *v, checkpoint_io *io) {
+static PetscErrorCode vein_metrics_checkpoint_write(diagnostic *self, sim *s, checkpoint_io *io) {
+  vein_metrics *v = self->data;
   const PetscInt64 ints[4] = {v->crossings, v->probe_gid, v->next_cycle, v->n_hist};
   const double reals[8] = {v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
                            v->gap_min,      v->gap_max,        v->rho_dev_max, v->mach_max};
   PetscFunctionBeginUser;
+  (void)s;
   PetscCall(checkpoint_put_ints(io, "vein_ints", ints, 4));
   PetscCall(checkpoint_put_reals(io, "vein_reals", reals, 8));
   if (v->n_hist) {
@@ -551,15 +394,15 @@ PetscErrorCode vein_metrics_checkpoint_write(vein_metrics *v, checkpoint_io *io)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode vein_metrics_checkpoint_read(vein_metrics *v, sim *s, checkpoint_io *io) {
+static PetscErrorCode vein_metrics_checkpoint_read(diagnostic *self, sim *s, checkpoint_io *io) {
+  vein_metrics *v = self->data;
   PetscInt64 ints[4];
   double reals[8];
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_ints(io, "vein_ints", ints, 4));
   PetscCall(checkpoint_get_reals(io, "vein_reals", reals, 8));
-  /* the crossings so far are carried by rank 0; the others count from zero */
-  v->crossings = ints[0];
-  v->crossings_local = s->rank == 0 ? ints[0] : 0;
+  (void)s;
+  v->crossings = ints[0]; /* at the last output (the count itself is "vein_crossings") */
   v->probe_gid = ints[1];
   v->next_cycle = (PetscInt)ints[2];
   const PetscInt n = (PetscInt)ints[3];
@@ -577,5 +420,42 @@ PetscErrorCode vein_metrics_checkpoint_read(vein_metrics *v, sim *s, checkpoint_
     PetscCall(PetscMalloc1(n, &v->hist));
     PetscCall(checkpoint_get_reals(io, "vein_hist", &v->hist[0][0], 3 * n));
   }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode vein_metrics_destroy(diagnostic *self) {
+  vein_metrics *v = self->data;
+  PetscFunctionBeginUser;
+  if (v->csv)
+    fclose(v->csv);
+  if (v->sinus)
+    fclose(v->sinus);
+  PetscCall(vein_leaflets_destroy(&v->leaves));
+  PetscCall(PetscFree(v->hist));
+  PetscCall(PetscFree(self->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode vein_metrics_register(sim *s, const vein_layout *lay, const diagnostic *crossings) {
+  diagnostic *d;
+  vein_metrics *v;
+  PetscFunctionBeginUser;
+  PetscCall(diagnostic_create("vein", &d));
+  PetscCall(PetscNew(&v));
+  d->data = v;
+  v->lay = *lay;
+  PetscCall(vein_leaflets_create(lay, &v->leaves));
+  v->crossings_check = crossings;
+  v->probe_gid = -1;
+  v->gap_min = INFINITY;
+  v->gap_max = -INFINITY;
+  d->output = "vein.csv, vein-sinus.csv, vein-summary.csv";
+  d->when.at_outputs = PETSC_TRUE;
+  d->sample = vein_metrics_sample;
+  d->finish = vein_metrics_finish;
+  d->destroy = vein_metrics_destroy;
+  d->checkpoint_write = vein_metrics_checkpoint_write;
+  d->checkpoint_read = vein_metrics_checkpoint_read;
+  PetscCall(diagnostics_add(s, d));
   PetscFunctionReturn(0);
 }

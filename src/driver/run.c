@@ -5,7 +5,8 @@
  *   time-step limits (check or adapt dt) -> first kick + drift -> migrate (wrap / owners) -> ghosts
  * + pair list
  *   -> modules' compute (forces, density rates) -> second kick
- *   -> state check (stop before any NaN is written) -> scene diagnostics -> progress */
+ *   -> state check (stop before any NaN is written) -> modules' and scene's post_step
+ *   -> the due diagnostics (each on its own schedule, diagnostic.h) -> output -> progress */
 #include <errno.h>
 #include <string.h>
 #include <unistd.h>
@@ -157,6 +158,16 @@ static PetscErrorCode sim_view(sim *s) {
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->view)
       PetscCall(s->modules[m]->view(s->modules[m], s, v));
+  if (s->n_diagnostics) {
+    PetscCall(PetscViewerASCIIPrintf(v, "diagnostics:"));
+    for (int k = 0; k < s->n_diagnostics; k++) {
+      const diagnostic *d = s->diagnostics[k];
+      PetscCall(PetscViewerASCIIPrintf(v, "%s %s%s%s%s", k ? "," : "", d->name,
+                                       d->output ? " (" : "", d->output ? d->output : "",
+                                       d->output ? ")" : ""));
+    }
+    PetscCall(PetscViewerASCIIPrintf(v, "\n"));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -250,8 +261,7 @@ PetscErrorCode sim_run(sim *s) {
   /* io: a restarted run already diagnosed and wrote out this state */
   if (!s->io.restarted) {
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    if (s->scn->diagnose)
-      PetscCall(s->scn->diagnose(s->scn, s));
+    PetscCall(diagnostics_sample(s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
     PetscCall(io_output(s));
   }
@@ -272,9 +282,11 @@ PetscErrorCode sim_run(sim *s) {
       if (s->modules[m]->post_step)
         PetscCall(s->modules[m]->post_step(s->modules[m], s));
     s->particle_steps += n_owned_global;
+    if (s->scn->post_step)
+      PetscCall(s->scn->post_step(s->scn, s));
+    /* before the output below: a diagnostic sees next_output_t of this step's output */
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    if (s->scn->diagnose)
-      PetscCall(s->scn->diagnose(s->scn, s));
+    PetscCall(diagnostics_sample(s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
     if (s->t >= s->next_output_t - 0.5 * s->dt) {
       PetscCall(io_output(s)); /* io: snapshot + XDMF */
@@ -292,8 +304,7 @@ PetscErrorCode sim_run(sim *s) {
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
   PetscCall(PetscLogStagePop());
-  if (s->scn->finish)
-    PetscCall(s->scn->finish(s->scn, s));
+  PetscCall(diagnostics_finish(s));
   PetscCall(progress_summary(s));
   PetscCall(dump_final(s));              /* mpi */
   PetscCall(migrate_report(&s->mig, s)); /* mpi */
@@ -307,6 +318,7 @@ PetscErrorCode sim_destroy(sim **sp) {
   PetscFunctionBeginUser;
   if (!s)
     PetscFunctionReturn(0);
+  PetscCall(diagnostics_destroy(s)); /* first: they may hold modules and the scene's data */
   for (int m = 0; m < s->n_modules; m++) {
     if (s->modules[m]->destroy)
       PetscCall(s->modules[m]->destroy(s->modules[m]));

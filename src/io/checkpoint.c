@@ -12,7 +12,7 @@
  *     before the walls read it, in the same evaluation).
  *   - the bond/angle store (topology_checkpoint.c), each entry written by the
  *     rank owning its first end;
- *   - modules' and the scene's private state through their checkpoint hooks.
+ *   - modules' and diagnostics' private state through their checkpoint hooks.
  * Reading validates before it changes anything it cannot restore: magic,
  * format version, scene, particle count, and each dataset's shape and type. */
 #include <string.h>
@@ -29,7 +29,7 @@ struct checkpoint_io {
   PetscMPIInt rank;
   const char *path;
   hid_t group;
-  const char *owner; /* "module <name>" or "scene" */
+  const char *owner; /* "module <name>" or "diagnostic <name>" */
   char where[80];    /* the group's path in the file, for messages */
 };
 
@@ -289,7 +289,7 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   if (s->topo) /* bonds and angles, made at build or at run time */
     PetscCall(topology_checkpoint_write(s, tmp, fid));
 
-  /* private state of modules and scene */
+  /* private state of modules and diagnostics */
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "modules", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (int m = 0; m < s->n_modules; m++) {
     module *mod = s->modules[m];
@@ -304,12 +304,20 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCallHDF5(tmp, H5Gclose(io.group));
   }
   PetscCallHDF5(tmp, H5Gclose(grp));
-  if (s->scn->checkpoint_write) {
-    io.owner = "the scene";
-    PetscCallHDF5(tmp, io.group = H5Gcreate2(fid, "scene", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-    PetscCall(s->scn->checkpoint_write(s->scn, s, &io));
+  /* each diagnostic's state in a group of its own name */
+  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "diagnostics", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    char owner[96];
+    if (!d->checkpoint_write)
+      continue;
+    PetscCall(PetscSNPrintf(owner, sizeof(owner), "diagnostic %s", d->name));
+    io.owner = owner;
+    PetscCallHDF5(tmp, io.group = H5Gcreate2(grp, d->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCall(d->checkpoint_write(d, s, &io));
     PetscCallHDF5(tmp, H5Gclose(io.group));
   }
+  PetscCallHDF5(tmp, H5Gclose(grp));
   PetscCall(h5io_close(tmp, &fid));
   PetscCall(h5io_commit(s->comm, tmp, path));
   PetscCall(PetscLogEventEnd(events.checkpoint, 0, 0, 0, 0));
@@ -386,7 +394,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_string(path, fid, "dmhs_version", text, sizeof(text)));
   PetscCheck(version == CHECKPOINT_FORMAT_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "-restart %s: checkpoint format version %" PetscInt64_FMT
-             " (written by dmhs %s); dmhs %s reads version %d",
+             " (written by dmhs %s); dmhs %s reads version %d only: continue it with the dmhs "
+             "that wrote it, or start the run afresh",
              path, version, text, DMHS_VERSION, CHECKPOINT_FORMAT_VERSION);
   PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
   PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
@@ -491,12 +500,20 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
     PetscCallHDF5(path, H5Gclose(io.group));
     PetscCallHDF5(path, H5Gclose(modules));
   }
-  if (s->scn->checkpoint_read) {
-    io.owner = "the scene";
-    PetscCall(PetscStrncpy(io.where, "scene", sizeof(io.where)));
-    PetscCall(checkpoint_open_group(path, fid, "scene", "scene state", &io.group));
-    PetscCall(s->scn->checkpoint_read(s->scn, s, &io));
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    char owner[96];
+    hid_t diagnostics;
+    if (!d->checkpoint_read)
+      continue;
+    PetscCall(PetscSNPrintf(owner, sizeof(owner), "diagnostic %s", d->name));
+    io.owner = owner;
+    PetscCall(PetscSNPrintf(io.where, sizeof(io.where), "diagnostics/%s", d->name));
+    PetscCall(checkpoint_open_group(path, fid, "diagnostics", "diagnostics' state", &diagnostics));
+    PetscCall(checkpoint_open_group(path, diagnostics, d->name, owner, &io.group));
+    PetscCall(d->checkpoint_read(d, s, &io));
     PetscCallHDF5(path, H5Gclose(io.group));
+    PetscCallHDF5(path, H5Gclose(diagnostics));
   }
   PetscCall(h5io_close(path, &fid));
   PetscCall(PetscLogEventEnd(events.checkpoint, 0, 0, 0, 0));

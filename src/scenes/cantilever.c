@@ -6,14 +6,8 @@
  *   static tip deflection w = F L^3/(3 EI) + F L/(kGA),
  *   first frequency 1/w1^2 = 1/wb^2 + 1/ws^2 (Dunkerley), wb = 1.8751^2 sqrt(EI/(mu L^4)),
  *   ws = (pi/2) sqrt(kGA/(mu L^2)).
- * Output: <output_dir>/cantilever.csv, one row per output interval:
- *   t, tip_dx, tip_dy (mean displacement of the tip column [m]), kinetic and
- *   potential energy [J]; header lines '# key = value' give the beam constants,
- *   the load F [N] and the damping rate gamma [1/s] (scripts/post/plot_cantilever.py).
- *   A restart continues the file (csv.h). */
+ * Output: the diagnostic "cantilever" (cantilever.csv, src/diag/cantilever_tip.c). */
 #include <math.h>
-#include <errno.h>
-#include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/fields.h"
 #include "dmhs/modules.h"
@@ -21,14 +15,13 @@
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/solid_load.h"
-#include "dmhs/csv.h"
+#include "dmhs/cantilever_tip.h"
 #include "solid_strip.h"
 
 typedef struct {
   solid_strip st;
   module *load;
-  double EI, kGA, mu, L, F; /* beam constants, tip load |F_y| */
-  FILE *csv;
+  double EI, kGA, mu, L; /* beam constants */
 } cantilever_data;
 
 /* scene defaults: the vein leaflet (doc/cases.md) */
@@ -72,34 +65,6 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-/* cantilever.csv with its '# key = value' header (csv.h: a restart continues it) */
-static PetscErrorCode cantilever_open_csv(cantilever_data *c, sim *s) {
-  char header[1024];
-  bond_style style;
-  const bond_params *bp;
-  double F[2], ka, th0, gamma;
-  PetscFunctionBeginUser;
-  if (s->rank)
-    PetscFunctionReturn(0);
-  PetscCall(bond_get_params(s, &style, &bp));
-  const double k_s =
-      style == BOND_HARMONIC ? 2 * bp->k[0] : 2 * bp->k[0] / (bp->rmax[0] * bp->rmax[0]);
-  PetscCall(solid_load_get_force(c->load, F));
-  c->F = -F[1]; /* downward tip load */
-  PetscCall(solid_load_get_damping(c->load, &gamma));
-  PetscCall(angle_get_params(s, &ka, &th0));
-  snprintf(header, sizeof(header),
-           "# cantilever: two-layer mass-spring strip (doc/theory.md)\n"
-           "# n = %d\n# n_clamp = %d\n# r0 = %.10g\n# mass = %.10g\n# k_s = %.10g\n# k_a = %.10g\n"
-           "# L = %.10g\n# EI = %.10g\n# kGA = %.10g\n# mu = %.10g\n# F = %.10g\n# gamma = %.10g\n"
-           "# dt = %.10g\n"
-           "t,tip_dx,tip_dy,kinetic,potential\n",
-           (int)c->st.n, (int)c->st.n_clamp, c->st.spacing, c->st.mass, k_s, ka, c->L, c->EI,
-           c->kGA, c->mu, c->F, gamma, s->dt);
-  PetscCall(csv_open(s, "cantilever.csv", header, &c->csv));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode cantilever_build(scene *self, sim *s) {
   cantilever_data *c = self->data;
   bond_style style;
@@ -130,78 +95,21 @@ static PetscErrorCode cantilever_build(scene *self, sim *s) {
   s->dom.periodic[0] = s->dom.periodic[1] = PETSC_FALSE;
   PetscCall(solid_strip_build(s, &c->st, &gid));
   solid_strip_beam(k_s, ka, r0, c->st.mass, &c->EI, &c->kGA, &c->mu);
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode cantilever_tip(sim *s, double d[2]) {
-  const particles *ps = &s->ps;
-  double local[3] = {0, 0, 0}, global[3];
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < ps->n_owned; i++)
-    if (ps->load[i] == SOLID_LOAD_MARK) {
-      local[0] += ps->x[i][0] - ps->x0[i][0];
-      local[1] += ps->x[i][1] - ps->x0[i][1];
-      local[2] += 1;
-    }
-  PetscCallMPI(MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, s->comm));
-  d[0] = global[0] / global[2];
-  d[1] = global[1] / global[2];
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode cantilever_energies(sim *s, double *kin, double *pot) {
-  double local = 0, e;
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    if (s->ps.type[i] != PTYPE_WALL)
-      local +=
-          0.5 * s->ps.mass[i] * (s->ps.v[i][0] * s->ps.v[i][0] + s->ps.v[i][1] * s->ps.v[i][1]);
-  PetscCallMPI(MPI_Allreduce(&local, kin, 1, MPI_DOUBLE, MPI_SUM, s->comm));
-  *pot = 0;
-  for (int m = 0; m < s->n_modules; m++)
-    if (s->modules[m]->energy) {
-      PetscCall(s->modules[m]->energy(s->modules[m], s, &e));
-      *pot += e;
-    }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode cantilever_diagnose(scene *self, sim *s) {
-  cantilever_data *c = self->data;
-  double d[2], kin = 0, pot = 0;
-  PetscFunctionBeginUser;
-  /* rows at step 0 and at output times */
-  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
-    PetscFunctionReturn(0);
-  if (!c->csv)
-    PetscCall(cantilever_open_csv(c, s));
-  PetscCall(cantilever_tip(s, d));
-  PetscCall(cantilever_energies(s, &kin, &pot));
-  if (c->csv)
-    PetscCall(csv_row(c->csv, "cantilever.csv", "%.10g,%.10g,%.10g,%.10g,%.10g\n", s->t, d[0], d[1],
-                      kin, pot));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode cantilever_finish(scene *self, sim *s) {
-  cantilever_data *c = self->data;
-  double d[2];
-  PetscFunctionBeginUser;
-  PetscCall(cantilever_tip(s, d));
-  PetscCall(PetscPrintf(
-      s->comm,
-      "cantilever: L = %g m, EI = %g N m^2, kGA = %g N; final tip displacement (%g, %g) m; see "
-      "cantilever.csv and test/validation/cantilever.py\n",
-      c->L, c->EI, c->kGA, d[0], d[1]));
-  PetscCall(csv_close(&c->csv, "cantilever.csv"));
+  const cantilever_beam beam = {.n = c->st.n,
+                                .n_clamp = c->st.n_clamp,
+                                .spacing = c->st.spacing,
+                                .mass = c->st.mass,
+                                .L = c->L,
+                                .EI = c->EI,
+                                .kGA = c->kGA,
+                                .mu = c->mu,
+                                .load = c->load};
+  PetscCall(cantilever_tip_register(s, &beam));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode cantilever_destroy(scene *self) {
-  cantilever_data *c = self->data;
   PetscFunctionBeginUser;
-  if (c->csv)
-    fclose(c->csv);
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -217,8 +125,6 @@ PetscErrorCode cantilever_scene_create(scene **out) {
   (*out)->name = "cantilever";
   (*out)->set_from_options = cantilever_set_from_options;
   (*out)->build = cantilever_build;
-  (*out)->diagnose = cantilever_diagnose;
-  (*out)->finish = cantilever_finish;
   (*out)->destroy = cantilever_destroy;
   (*out)->data = c;
   PetscFunctionReturn(0);

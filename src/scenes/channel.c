@@ -4,7 +4,7 @@
  * by the body force module: constant (start-up Poiseuille) or, with
  * -body_force_period T > 0, pulsatile g0 sin(2 pi t/T) (Womersley start-up).
  * The liquid's v_x is compared with the series solution as the run goes
- * (diag/errors.c). */
+ * (the diagnostic "errors", diag/errors.c). */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
@@ -24,7 +24,7 @@ typedef struct {
   double omega;         /* 2 pi/T of a pulsatile drive [1/s], 0 = constant */
   double nu;            /* for the exact solution */
   module *body;
-  errors err;
+  errors_times report_times; /* of the diagnostic "errors" */
 } channel_data;
 
 static double exact_poiseuille(double y, double t, const void *ctx) {
@@ -93,7 +93,7 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
     PetscCall(modules_enable(s, "body_force", &c->body));
     PetscCall(body_force_set_default(c->body, 2e-4, 0.0));
   }
-  PetscCall(errors_set_from_options(&c->err, s));
+  PetscCall(errors_set_from_options(&c->report_times, s));
   PetscFunctionReturn(0);
 }
 
@@ -144,52 +144,21 @@ static PetscErrorCode channel_build(scene *self, sim *s) {
                  "poiseuille: with -body_force_period %g s the drive along x is 0: set "
                  "-body_force_amplitude g0 (or -body_force g0,0)",
                  period);
-      PetscCall(errors_setup(&c->err, s, exact_womersley, c,
-                             analytic_womersley_amplitude(c->drive, c->omega, c->nu, c->width)));
+      PetscCall(errors_register(s, &c->report_times, exact_womersley, c,
+                                analytic_womersley_amplitude(c->drive, c->omega, c->nu, c->width)));
     } else {
       c->drive = F[0];
       const double peak = c->drive * c->width * c->width / (8.0 * c->nu);
-      PetscCall(errors_setup(&c->err, s, exact_poiseuille, c, peak));
+      PetscCall(errors_register(s, &c->report_times, exact_poiseuille, c, peak));
     }
   } else {
-    PetscCall(errors_setup(&c->err, s, exact_couette, c, fabs(c->wall_speed)));
+    PetscCall(errors_register(s, &c->report_times, exact_couette, c, fabs(c->wall_speed)));
   }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode channel_diagnose(scene *self, sim *s) {
-  channel_data *c = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(errors_on_step(&c->err, s));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode channel_finish(scene *self, sim *s) {
-  channel_data *c = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(errors_report(&c->err, s));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode channel_checkpoint_write(scene *self, sim *s, struct checkpoint_io *io) {
-  channel_data *c = self->data;
-  PetscFunctionBeginUser;
-  (void)s;
-  PetscCall(errors_checkpoint_write(&c->err, io));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode channel_checkpoint_read(scene *self, sim *s, struct checkpoint_io *io) {
-  channel_data *c = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(errors_checkpoint_read(&c->err, s, io));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode channel_destroy(scene *self) {
-  channel_data *c = self->data;
   PetscFunctionBeginUser;
-  PetscCall(errors_destroy(&c->err));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -208,11 +177,7 @@ PetscErrorCode channel_scene_create(channel_flow flow, scene **out) {
   (*out)->name = flow == CHANNEL_POISEUILLE ? "poiseuille" : "couette";
   (*out)->set_from_options = channel_set_from_options;
   (*out)->build = channel_build;
-  (*out)->diagnose = channel_diagnose;
-  (*out)->finish = channel_finish;
   (*out)->destroy = channel_destroy;
-  (*out)->checkpoint_write = channel_checkpoint_write;
-  (*out)->checkpoint_read = channel_checkpoint_read;
   (*out)->data = c;
   PetscFunctionReturn(0);
 }

@@ -21,21 +21,10 @@
  * Tracked sets: the liquid initially in pocket 0 ("white", tracer 1) and, with
  * -intestine_red, in pocket -intestine_red_pocket ("red", tracer 2).
  *
- * Diagnostics, <output_dir>/intestine.csv every output interval:
- *   t, sub (sub-period, -1 = no wave), x_F [m] (mean x of white),
- *   white_0 .. white_{N+1} (counts per pocket, N+1 = overflow), alpha
- *   (fraction of white out of pocket 0), [red_0 .. red_{N+1}], overflow
- *   (all parked fluid), fluid (fluid in the computation), rho_dev and mach
- *   (max |rho/rho0 - 1| and max |v|/c0 of the liquid), in_membrane and
- *   through (liquid particles lodged between the membrane's top and bottom
- *   layers, and below its bottom layer), lift_0 .. lift_N
- *   (mean y displacement of the middle third of each segment [m]),
- *   s_0 .. s_N (the schedule's value per pocket).
- * At the end: u_F, V_w, alpha after one period, u_P, u_S, Re, Ga, Fr, Lambda
- * (doc/theory.md, "Peristalsis and tracking"). */
+ * Diagnostics: "intestine" (intestine.csv at output times, the summary at the
+ * end: src/diag/intestine_tracking.c). After every step the liquid past the
+ * weir is parked (intestine_post_step). */
 #include <math.h>
-#include <errno.h>
-#include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/fields.h"
 #include "dmhs/modules.h"
@@ -46,13 +35,7 @@
 #include "dmhs/body_force.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"
-#include "dmhs/checkpoint.h"
-#include "dmhs/csv.h"
-#include "dmhs/liquid_state.h"
-#include "dmhs/membrane_leak.h"
-
-#define TRACER_WHITE 1
-#define TRACER_RED   2
+#include "dmhs/intestine_tracking.h"
 
 typedef struct {
   PetscInt n_pockets; /* N + 1 */
@@ -60,20 +43,10 @@ typedef struct {
   PetscInt layers, clamp, red_pocket;
   PetscBool red;
   module *body, *rep, *peri;
-  PetscInt64 n_fluid; /* fluid gids 0 .. n_fluid - 1 */
-  PetscInt64 n_white0, n_red0;
+  PetscInt64 n_fluid;   /* fluid gids 0 .. n_fluid - 1 */
   double x_end, x_park; /* (N+1) b; parking line past the weir */
   double lot_x0, lot_y0, lot_sp;
   PetscInt lot_rows;
-  /* history of x_F for the slope (replicated) */
-  double *hist_t, *hist_x;
-  PetscInt n_hist, cap_hist;
-  double alpha_T;                     /* alpha after one period (NAN until reached) */
-  double lift_max;                    /* largest segment lift seen [m] */
-  membrane_layout mem;                /* the liquid must stay above its top layer */
-  double rho_dev_max, mach_max;       /* over the output rows so far */
-  PetscInt64 inside_max, through_max; /* most liquid particles in / through the membrane in a row */
-  FILE *csv;
 } intestine_data;
 
 static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
@@ -218,9 +191,9 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
       PetscCall(particles_add_owned(&s->ps, gid++, PTYPE_FLUID, x, zero, m, rho, &idx));
       const PetscInt k = tracking_pocket(x[0], c->n_pockets, c->b, 0.0);
       if (k == 0)
-        s->ps.tracer[idx] = TRACER_WHITE;
+        s->ps.tracer[idx] = INTESTINE_TRACER_WHITE;
       else if (c->red && k == c->red_pocket)
-        s->ps.tracer[idx] = TRACER_RED;
+        s->ps.tracer[idx] = INTESTINE_TRACER_RED;
     }
   c->n_fluid = gid;
   /* the parking lot must fit in x: widen the domain */
@@ -277,7 +250,7 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
     }
   }
   PetscCall(PetscFree(cx));
-  c->mem = (membrane_layout){.g0 = g0, .n_columns = ncol, .layers = L};
+  const membrane_layout mem = {.g0 = g0, .n_columns = ncol, .layers = L};
   PetscCall(PetscPrintf(
       s->comm,
       "intestine: %" PetscInt_FMT " pockets of %g m, fluid gids 0..%" PetscInt64_FMT
@@ -308,6 +281,17 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
 #undef FIXED
   PetscCheck(s->dom.lo[1] < y_bottom && c->lot_y0 + c->lot_rows * c->lot_sp < s->dom.hi[1], s->comm,
              PETSC_ERR_PLIB, "intestine: domain too small");
+  const intestine_layout lay = {.n_pockets = c->n_pockets,
+                                .b = c->b,
+                                .dx = c->dx,
+                                .level = c->level,
+                                .amplitude = c->amplitude,
+                                .red = c->red,
+                                .n_fluid = c->n_fluid,
+                                .mem = mem,
+                                .peri = c->peri,
+                                .body = c->body};
+  PetscCall(intestine_tracking_register(s, &lay));
   PetscFunctionReturn(0);
 }
 
@@ -331,334 +315,14 @@ static PetscErrorCode intestine_park(intestine_data *c, sim *s) {
   PetscFunctionReturn(0);
 }
 
-typedef struct {
-  const intestine_data *c;
-  PetscInt k;
-} seg_sel;
-
-static PetscBool intestine_segment_centre(const sim *s, PetscInt i, void *ctx) {
-  const seg_sel *q = ctx;
-  if (s->ps.type[i] != PTYPE_SOLID || s->ps.segment[i] != PERISTALSIS_SEGMENT0 + q->k)
-    return PETSC_FALSE;
-  return fabs(s->ps.x0[i][0] - (q->k + 0.5) * q->c->b) < q->c->b / 6 ? PETSC_TRUE : PETSC_FALSE;
-}
-
-static PetscErrorCode intestine_fluid_counts(intestine_data *c, sim *s, PetscInt64 *fluid,
-                                             PetscInt64 *parked) {
-  PetscInt64 buf[2] = {0, 0};
+static PetscErrorCode intestine_post_step(scene *self, sim *s) {
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++) {
-    if (s->ps.type[i] == PTYPE_FLUID)
-      buf[0]++;
-    else if (s->ps.gid[i] < c->n_fluid)
-      buf[1]++;
-  }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, buf, 2, MPIU_INT64, MPI_SUM, s->comm));
-  *fluid = buf[0];
-  *parked = buf[1];
-  PetscFunctionReturn(0);
-}
-
-/* intestine.csv and its header (csv.h: a restart keeps the rows up to the checkpoint) */
-static PetscErrorCode intestine_open_csv(intestine_data *c, sim *s, double tw, double Tw) {
-  const PetscInt np = c->n_pockets;
-  const size_t len = 512 + 32 * (size_t)(4 * np + 8);
-  size_t at = 0;
-  char *h;
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(len, &h));
-#define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, at < len ? len - at : 0, __VA_ARGS__)
-  INTESTINE_HEADER("# intestine: %" PetscInt_FMT
-                   " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
-                   "t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
-                   np, c->b, c->dx, c->level, c->amplitude, tw, Tw, c->n_fluid);
-  INTESTINE_HEADER("t,sub,x_F");
-  for (PetscInt k = 0; k <= np; k++)
-    INTESTINE_HEADER(",white_%" PetscInt_FMT, k);
-  INTESTINE_HEADER(",alpha");
-  if (c->red)
-    for (PetscInt k = 0; k <= np; k++)
-      INTESTINE_HEADER(",red_%" PetscInt_FMT, k);
-  INTESTINE_HEADER(",overflow,fluid,rho_dev,mach,in_membrane,through");
-  for (PetscInt k = 0; k < np; k++)
-    INTESTINE_HEADER(",lift_%" PetscInt_FMT, k);
-  for (PetscInt k = 0; k < np; k++)
-    INTESTINE_HEADER(",s_%" PetscInt_FMT, k);
-  INTESTINE_HEADER("\n");
-#undef INTESTINE_HEADER
-  PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "intestine.csv header longer than %zu bytes", len);
-  PetscCall(csv_open(s, "intestine.csv", h, &c->csv));
-  PetscCall(PetscFree(h));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode intestine_diagnose(scene *self, sim *s) {
-  intestine_data *c = self->data;
-  const PetscInt np = c->n_pockets;
-  PetscInt64 *cw, *cr, nw, nr, fluid, parked;
-  double xw, xr, tw, Tw, delay;
-  PetscFunctionBeginUser;
-  PetscCall(intestine_park(c, s));
-  PetscCall(peristalsis_get(c->peri, &tw, &Tw, NULL, NULL, &delay));
-  /* rows at step 0 and at output times; a restarted run continues the CSV (csv.h) */
-  if (s->step > 0 && s->t < s->next_output_t - 0.5 * s->dt)
-    PetscFunctionReturn(0);
-  PetscCall(PetscCalloc2(np + 1, &cw, np + 1, &cr));
-  PetscCall(tracking_count(s, TRACER_WHITE, np, c->b, 0.0, cw, &nw, &xw));
-  if (c->red)
-    PetscCall(tracking_count(s, TRACER_RED, np, c->b, 0.0, cr, &nr, &xr));
-  PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
-  double rho_dev, mach;
-  PetscInt64 inside, through;
-  PetscCall(liquid_state_bounds(s, &rho_dev, &mach));
-  PetscCall(membrane_leak_count(s, &c->mem, &inside, &through));
-  c->rho_dev_max = PetscMax(c->rho_dev_max, rho_dev);
-  c->mach_max = PetscMax(c->mach_max, mach);
-  c->inside_max = PetscMax(c->inside_max, inside);
-  c->through_max = PetscMax(c->through_max, through);
-  PetscCheck(fluid + parked == c->n_fluid, s->comm, PETSC_ERR_PLIB,
-             "intestine: %" PetscInt64_FMT " fluid + %" PetscInt64_FMT " parked != %" PetscInt64_FMT
-             " initial at t = %g s",
-             fluid, parked, c->n_fluid, s->t);
-  if (s->step == 0) {
-    c->n_white0 = nw;
-    c->n_red0 = c->red ? nr : 0;
-  }
-  const double alpha = c->n_white0 > 0 ? 1.0 - (double)cw[0] / (double)c->n_white0 : 0.0;
-  double *lift;
-  PetscCall(PetscMalloc1(np, &lift));
-  for (PetscInt k = 0; k < np; k++) {
-    seg_sel q = {c, k};
-    PetscInt64 n;
-    PetscCall(tracking_mean_displacement(s, intestine_segment_centre, &q, 1, &lift[k], &n));
-    c->lift_max = PetscMax(c->lift_max, lift[k]);
-  }
-  const PetscInt sub = peristalsis_subperiod(c->peri, s->t);
-  /* x_F history of the squeezing phase for u_F: the first wave */
-  if (s->t >= delay - 0.5 * s->dt && s->t <= delay + Tw + 0.5 * s->dt) {
-    if (c->n_hist == c->cap_hist) {
-      c->cap_hist = 2 * c->cap_hist + 64;
-      PetscCall(PetscRealloc(sizeof(double) * c->cap_hist, &c->hist_t));
-      PetscCall(PetscRealloc(sizeof(double) * c->cap_hist, &c->hist_x));
-    }
-    c->hist_t[c->n_hist] = s->t;
-    c->hist_x[c->n_hist++] = xw;
-  }
-  if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt)
-    c->alpha_T = alpha;
-  if (s->rank == 0) { /* mpi: rank 0 writes */
-    if (!c->csv)
-      PetscCall(intestine_open_csv(c, s, tw, Tw));
-    const size_t len = 64 + 32 * (size_t)(4 * np + 8);
-    size_t at = 0;
-    char *row;
-    PetscCall(PetscMalloc1(len, &row));
-#define INTESTINE_ROW(...) at += (size_t)snprintf(row + at, at < len ? len - at : 0, __VA_ARGS__)
-    INTESTINE_ROW("%.8g,%" PetscInt_FMT ",%.10g", s->t, sub, xw);
-    for (PetscInt k = 0; k <= np; k++)
-      INTESTINE_ROW(",%" PetscInt64_FMT, cw[k]);
-    INTESTINE_ROW(",%.8g", alpha);
-    if (c->red)
-      for (PetscInt k = 0; k <= np; k++)
-        INTESTINE_ROW(",%" PetscInt64_FMT, cr[k]);
-    INTESTINE_ROW(",%" PetscInt64_FMT ",%" PetscInt64_FMT ",%.6g,%.6g,%" PetscInt64_FMT
-                  ",%" PetscInt64_FMT,
-                  parked, fluid, rho_dev, mach, inside, through);
-    for (PetscInt k = 0; k < np; k++)
-      INTESTINE_ROW(",%.8g", lift[k]);
-    for (PetscInt k = 0; k < np; k++)
-      INTESTINE_ROW(",%d", peristalsis_value(c->peri, s->t, k));
-    INTESTINE_ROW("\n");
-#undef INTESTINE_ROW
-    PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes",
-               len);
-    PetscCall(csv_line(c->csv, "intestine.csv", row));
-    PetscCall(PetscFree(row));
-  }
-  PetscCall(PetscFree(lift));
-  PetscCall(PetscFree2(cw, cr));
-  PetscFunctionReturn(0);
-}
-
-/* <output_dir>/intestine-summary.csv (key,value; "n/a" for an undefined
- * value, e.g. alpha when the run ends before one period), written to a
- * temporary name and renamed. */
-static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const double *values,
-                                              PetscInt n) {
-  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
-  PetscFunctionBeginUser;
-  PetscCall(io_output_path(s, "intestine-summary.csv", path, sizeof(path)));
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-  FILE *f = fopen(tmp, "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
-  int ok = fprintf(f, "key,value\n") > 0;
-  for (PetscInt i = 0; i < n; i++)
-    ok = (isfinite(values[i]) ? fprintf(f, "%s,%.8g\n", keys[i], values[i])
-                              : fprintf(f, "%s,n/a\n", keys[i])) > 0 &&
-         ok;
-  ok = (fclose(f) == 0) && ok;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode intestine_finish(scene *self, sim *s) {
-  const sph_params *sp = sph_params_get(s);
-  intestine_data *c = self->data;
-  double tw, Tw, delay, uF;
-  PetscInt64 fluid, parked;
-  PetscFunctionBeginUser;
-  PetscCall(peristalsis_get(c->peri, &tw, &Tw, NULL, NULL, &delay));
-  PetscCall(tracking_slope(c->hist_t, c->hist_x, c->n_hist, &uF));
-  /* the initial-slope rule (when the level drops, x_F bends over): the slope
-   * while pocket 0 squeezes in the first wave, the front's first advance */
-  double uF0 = NAN;
-  {
-    PetscInt i0 = -1, n0 = 0;
-    for (PetscInt i = 0; i < c->n_hist; i++)
-      if (peristalsis_value(c->peri, c->hist_t[i], 0) > 0) {
-        if (i0 < 0)
-          i0 = i;
-        if (i == i0 + n0)
-          n0++; /* the first contiguous squeeze only */
-      }
-    if (i0 >= 0)
-      PetscCall(tracking_slope(c->hist_t + i0, c->hist_x + i0, n0, &uF0));
-  }
-  PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
-  double a_body[DMHS_DIM];
-  body_force_at(c->body, s->t, a_body);
-  const double nu = sp->nu, g = fabs(a_body[1]);
-  const double Vw = c->n_pockets * c->b / Tw;
-  const PetscBool reached = isnan(c->alpha_T) ? PETSC_FALSE : PETSC_TRUE;
-  const double a = c->alpha_T;
-  const double uP = a / (1 - a) * Vw / c->n_pockets, uS = a * Vw;
-  const PetscBool measured = c->lift_max > c->dx ? PETSC_TRUE : PETSC_FALSE;
-  const double h = measured ? c->lift_max : c->amplitude;
-  PetscCall(PetscPrintf(s->comm,
-                        "intestine: fluid %" PetscInt64_FMT " in the computation + %" PetscInt64_FMT
-                        " overflowed (pocket N+1, parked) = %" PetscInt64_FMT " of %" PetscInt64_FMT
-                        " initial\n",
-                        fluid, parked, fluid + parked, c->n_fluid));
-  PetscCall(PetscPrintf(
-      s->comm,
-      "intestine: liquid bounds over the output rows: max |rho/rho0 - 1| %.3g, max Mach %.3g; "
-      "liquid in the membrane (between its top and bottom layers) at most %" PetscInt64_FMT
-      ", through it %" PetscInt64_FMT " particles\n",
-      c->rho_dev_max, c->mach_max, c->inside_max, c->through_max));
-  PetscCall(PetscPrintf(
-      s->comm,
-      "intestine: front velocity u_F = %g m/s (least squares of x_F over %" PetscInt_FMT
-      " rows, t in [%g, %g] s)\n",
-      uF, c->n_hist, c->n_hist ? c->hist_t[0] : NAN, c->n_hist ? c->hist_t[c->n_hist - 1] : NAN));
-  PetscCall(PetscPrintf(
-      s->comm, "intestine: initial front velocity (while pocket 0 squeezes) u_F0 = %g m/s\n", uF0));
-  PetscCall(PetscPrintf(s->comm, "intestine: V_w = (N+1) b / T_w = %g m/s (T_w = %g s)\n", Vw, Tw));
-  if (reached)
-    PetscCall(PetscPrintf(s->comm,
-                          "intestine: alpha after one period = %g, u_P = alpha/(1-alpha) V_w/(N+1) "
-                          "= %g m/s, u_S = alpha V_w = %g m/s\n",
-                          a, uP, uS));
-  else
-    PetscCall(PetscPrintf(s->comm,
-                          "intestine: alpha after one period: not reached (t_end < delay + T_w = "
-                          "%g s); u_P, u_S undefined\n",
-                          delay + Tw));
-  PetscCall(PetscPrintf(s->comm,
-                        "intestine: h = %g m (%s), Re = b u_F/nu = %g, Ga = h^3 g/nu^2 = %g, Fr = "
-                        "V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
-                        h,
-                        measured ? "largest measured segment lift"
-                                 : "configured amplitude A: no lift above dx measured",
-                        c->b * uF / nu, h * h * h * g / (nu * nu), Vw / sqrt(g * h), h / c->level));
-  PetscCall(csv_close(&c->csv, "intestine.csv"));
-  if (s->rank == 0) {
-    const double Re = c->b * uF / nu, Ga = h * h * h * g / (nu * nu), Fr = Vw / sqrt(g * h),
-                 Lambda = h / c->level;
-    const double values[] = {c->b,
-                             c->level,
-                             nu,
-                             Tw,
-                             Vw,
-                             uF,
-                             uF0,
-                             a,
-                             uP,
-                             uS,
-                             h,
-                             Re,
-                             Ga,
-                             Fr,
-                             Lambda,
-                             c->rho_dev_max,
-                             c->mach_max,
-                             (double)c->inside_max,
-                             (double)c->through_max,
-                             (double)fluid,
-                             (double)parked,
-                             s->t};
-    static const char *keys[] = {
-        "b",           "level",   "nu",       "T_w",         "V_w",      "u_F",
-        "u_F_initial", "alpha_T", "u_P",      "u_S",         "h",        "Re",
-        "Ga",          "Fr",      "Lambda",   "rho_dev_max", "mach_max", "in_membrane_max",
-        "through_max", "fluid",   "overflow", "t_end"};
-    PetscCall(intestine_write_summary(s, keys, values, (PetscInt)(sizeof(keys) / sizeof(keys[0]))));
-  }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode intestine_checkpoint_write(scene *self, sim *s, struct checkpoint_io *io) {
-  intestine_data *c = self->data;
-  const PetscInt64 ints[5] = {c->n_white0, c->n_red0, c->n_hist, c->inside_max, c->through_max};
-  const double reals[4] = {c->alpha_T, c->lift_max, c->rho_dev_max, c->mach_max};
-  PetscFunctionBeginUser;
-  (void)s;
-  PetscCall(checkpoint_put_ints(io, "intestine_ints", ints, 5));
-  PetscCall(checkpoint_put_reals(io, "intestine_reals", reals, 4));
-  if (c->n_hist) {
-    PetscCall(checkpoint_put_reals(io, "intestine_hist_t", c->hist_t, c->n_hist));
-    PetscCall(checkpoint_put_reals(io, "intestine_hist_x", c->hist_x, c->n_hist));
-  }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode intestine_checkpoint_read(scene *self, sim *s, struct checkpoint_io *io) {
-  intestine_data *c = self->data;
-  PetscInt64 ints[5];
-  double reals[4];
-  PetscFunctionBeginUser;
-  (void)s;
-  PetscCall(checkpoint_get_ints(io, "intestine_ints", ints, 5));
-  PetscCall(checkpoint_get_reals(io, "intestine_reals", reals, 4));
-  c->n_white0 = ints[0];
-  c->n_red0 = ints[1];
-  c->n_hist = c->cap_hist = (PetscInt)ints[2];
-  c->alpha_T = reals[0];
-  c->lift_max = reals[1];
-  c->rho_dev_max = reals[2];
-  c->mach_max = reals[3];
-  c->inside_max = ints[3];
-  c->through_max = ints[4];
-  PetscCall(PetscFree(c->hist_t));
-  PetscCall(PetscFree(c->hist_x));
-  if (c->n_hist) {
-    PetscCall(PetscMalloc1(c->n_hist, &c->hist_t));
-    PetscCall(PetscMalloc1(c->n_hist, &c->hist_x));
-    PetscCall(checkpoint_get_reals(io, "intestine_hist_t", c->hist_t, c->n_hist));
-    PetscCall(checkpoint_get_reals(io, "intestine_hist_x", c->hist_x, c->n_hist));
-  }
+  PetscCall(intestine_park(self->data, s));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode intestine_destroy(scene *self) {
-  intestine_data *c = self->data;
   PetscFunctionBeginUser;
-  if (c->csv)
-    fclose(c->csv);
-  PetscCall(PetscFree(c->hist_t));
-  PetscCall(PetscFree(c->hist_x));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -677,15 +341,11 @@ PetscErrorCode intestine_scene_create(scene **out) {
   c->clamp = 3;
   c->wall_height = 0.03;
   c->red_pocket = 4;
-  c->alpha_T = NAN;
   (*out)->name = "intestine";
   (*out)->set_from_options = intestine_set_from_options;
   (*out)->build = intestine_build;
-  (*out)->diagnose = intestine_diagnose;
-  (*out)->finish = intestine_finish;
+  (*out)->post_step = intestine_post_step;
   (*out)->destroy = intestine_destroy;
-  (*out)->checkpoint_write = intestine_checkpoint_write;
-  (*out)->checkpoint_read = intestine_checkpoint_read;
   (*out)->data = c;
   PetscFunctionReturn(0);
 }

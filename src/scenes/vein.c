@@ -31,7 +31,7 @@
  * bonds r0 = dx and K ~ dx^-3, angles k_a ~ dx^-1 (both keep the leaflet's
  * bending stiffness EI = K r0^3 + 2 k_a r0, doc/theory.md). -bond_k, -angle_k,
  * -repulsion_k given explicitly are used as they are.
- * Diagnostics: src/diag/vein_metrics.c. */
+ * Diagnostics: "vein_crossings" and "vein" (vein_metrics.h). */
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
@@ -60,7 +60,6 @@ typedef struct {
   PetscBool clots; /* -vein_clots: module agglomeration */
   module *body, *rep, *agg;
   vein_layout lay;
-  vein_metrics *metrics;
 } vein_data;
 
 /* The extreme (largest when sign = +1, smallest when -1) of value[] over the
@@ -448,7 +447,7 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
                         n_free * dx, theta * 180.0 / M_PI, x_root,
                         2 * (0.5 * v->width - n_free * dx * sin(theta))));
 
-  /* the diagnostics object, with what they need of the geometry */
+  /* the diagnostics, with what they need of the geometry */
   PetscCall(body_force_get(v->body, F, &T));
   v->lay.dx = dx;
   v->lay.width = v->width;
@@ -462,43 +461,14 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
   v->lay.leaflet_length = n_free * dx;
   v->lay.g0 = F[0];
   v->lay.ka_ref = v->ka_ref;
-  PetscCall(vein_metrics_create(s, &v->lay, &v->metrics));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode vein_diagnose(scene *self, sim *s) {
-  vein_data *v = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(vein_metrics_diagnose(v->metrics, s));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode vein_finish(scene *self, sim *s) {
-  vein_data *v = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(vein_metrics_finish(v->metrics, s));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode vein_checkpoint_write(scene *self, sim *s, struct checkpoint_io *io) {
-  vein_data *v = self->data;
-  PetscFunctionBeginUser;
-  (void)s;
-  PetscCall(vein_metrics_checkpoint_write(v->metrics, io));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode vein_checkpoint_read(scene *self, sim *s, struct checkpoint_io *io) {
-  vein_data *v = self->data;
-  PetscFunctionBeginUser;
-  PetscCall(vein_metrics_checkpoint_read(v->metrics, s, io));
+  diagnostic *crossings;
+  PetscCall(vein_crossings_register(s, &v->lay, &crossings));
+  PetscCall(vein_metrics_register(s, &v->lay, crossings));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode vein_destroy(scene *self) {
-  vein_data *v = self->data;
   PetscFunctionBeginUser;
-  PetscCall(vein_metrics_destroy(&v->metrics));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -524,11 +494,7 @@ PetscErrorCode vein_scene_create(scene **out) {
   (*out)->name = "vein";
   (*out)->set_from_options = vein_set_from_options;
   (*out)->build = vein_build;
-  (*out)->diagnose = vein_diagnose;
-  (*out)->finish = vein_finish;
   (*out)->destroy = vein_destroy;
-  (*out)->checkpoint_write = vein_checkpoint_write;
-  (*out)->checkpoint_read = vein_checkpoint_read;
   (*out)->data = v;
   PetscFunctionReturn(0);
 }

@@ -75,8 +75,8 @@ PYEOF
 cp "$GOOD" "$W/flipped.h5" && flip "$W/flipped.h5" particles/v
 expect_fail flipped "checkpoint $W/flipped.h5 is corrupt: dataset /particles/v fails its checksum" \
   -output_dir "$W/o11" -restart "$W/flipped.h5"
-cp "$GOOD" "$W/flipped_state.h5" && flip "$W/flipped_state.h5" scene/errors_next_report
-expect_fail flipped_state "dataset /scene/errors_next_report fails its checksum" -output_dir "$W/o12" \
+cp "$GOOD" "$W/flipped_state.h5" && flip "$W/flipped_state.h5" diagnostics/errors/errors_next_report
+expect_fail flipped_state "dataset /diagnostics/errors/errors_next_report fails its checksum" -output_dir "$W/o12" \
   -restart "$W/flipped_state.h5"
 cp "$GOOD" "$W/dup.h5"
 "$PY" -c "import h5py; f=h5py.File('$W/dup.h5','r+'); g=f['particles/gid']; v=g[()]; v[3]=v[4]; g[...]=v"

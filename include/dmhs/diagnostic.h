@@ -1,0 +1,65 @@
+/* The diagnostic interface: an object that measures the state after the steps
+ * of its own schedule and owns its output file, its end-of-run report and the
+ * state a restart needs. A scene registers the diagnostics it wants in its
+ * build, with the geometry they measure (diagnostics_add); the driver samples
+ * the due ones after every step and once before step 1 (step 0), in the order
+ * they were registered, each under a PETSc log event of its own name
+ * ("Diag:<name>" in -log_view). src/diag/diagnostic.c. */
+#ifndef DMHS_DIAGNOSTIC_H
+#define DMHS_DIAGNOSTIC_H
+#include <petscsys.h>
+
+struct sim;
+struct checkpoint_io;
+
+/* When a diagnostic samples: at a step that any of the set conditions selects.
+ * Output times are those of the snapshots (-output_interval): step 0 and every
+ * step with t within dt/2 of the next output time. */
+typedef struct diagnostic_schedule {
+  PetscInt every_steps;   /* > 0: at the steps that are multiples of it, step 0 included */
+  PetscBool at_outputs;   /* at the output times */
+  PetscBool not_at_start; /* never at step 0 (a row there would say nothing) */
+} diagnostic_schedule;
+
+typedef struct diagnostic diagnostic;
+struct diagnostic {
+  char name[64];      /* its log event and its checkpoint group (/diagnostics/<name>) */
+  const char *output; /* the file it owns in -output_dir, NULL when it only reports */
+  diagnostic_schedule when;
+  /* Optional: instants of its own besides the schedule (the errors' report times). */
+  PetscBool (*due)(const diagnostic *self, const struct sim *s);
+  /* Measures the current state; called on every rank (collective). */
+  PetscErrorCode (*sample)(diagnostic *self, struct sim *s);
+  /* Optional: the end-of-run report (after the last step). Collective. */
+  PetscErrorCode (*finish)(diagnostic *self, struct sim *s);
+  /* Optional: frees data and closes files (the struct itself is freed by the list). */
+  PetscErrorCode (*destroy)(diagnostic *self);
+  /* Optional: save / restore what an exact restart needs (counters, histories,
+   * reports done) with checkpoint_put_* / checkpoint_get_* (checkpoint.h). */
+  PetscErrorCode (*checkpoint_write)(diagnostic *self, struct sim *s, struct checkpoint_io *io);
+  PetscErrorCode (*checkpoint_read)(diagnostic *self, struct sim *s, struct checkpoint_io *io);
+  void *data;
+  PetscLogEvent event; /* set by diagnostics_add */
+};
+
+#define SIM_MAX_DIAGNOSTICS 16
+
+/* A zeroed diagnostic named name (letters, digits, '_'). */
+PetscErrorCode diagnostic_create(const char *name, diagnostic **out);
+/* Appends d to s's list (which then owns it) and registers its log event;
+ * refuses a second diagnostic of the same name. */
+PetscErrorCode diagnostics_add(struct sim *s, diagnostic *d);
+/* The registered diagnostic of that name, or NULL. */
+diagnostic *diagnostics_find(const struct sim *s, const char *name);
+/* Whether the current step is an output time (step 0 included). */
+PetscBool diagnostic_output_time(const struct sim *s);
+/* Whether d samples at the current step (its schedule, then its own due). */
+PetscBool diagnostic_is_due(const diagnostic *d, const struct sim *s);
+/* Samples every due diagnostic, in registration order. Collective. */
+PetscErrorCode diagnostics_sample(struct sim *s);
+/* Every diagnostic's end-of-run report, in registration order. Collective. */
+PetscErrorCode diagnostics_finish(struct sim *s);
+/* Destroys and frees every diagnostic; the list is empty after. */
+PetscErrorCode diagnostics_destroy(struct sim *s);
+
+#endif

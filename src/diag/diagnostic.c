@@ -1,0 +1,102 @@
+/* The list of diagnostics of a run (diagnostic.h): registration, schedule,
+ * sampling under per-diagnostic log events, end-of-run reports, teardown.
+ * Their checkpoint groups are written and read by src/io/checkpoint.c. */
+#include <ctype.h>
+#include <string.h>
+#include "dmhs/sim.h"
+#include "dmhs/diagnostic.h"
+#include "dmhs/events.h"
+
+PetscErrorCode diagnostic_create(const char *name, diagnostic **out) {
+  size_t len;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrlen(name, &len));
+  PetscCheck(len > 0 && len < sizeof((*out)->name), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "diagnostic name '%s': 1 to %zu characters", name, sizeof((*out)->name) - 1);
+  /* the name becomes an HDF5 group in checkpoints: nothing that would nest or escape */
+  for (size_t k = 0; k < len; k++)
+    PetscCheck(isalnum((unsigned char)name[k]) || name[k] == '_', PETSC_COMM_SELF,
+               PETSC_ERR_ARG_WRONG, "diagnostic name '%s': only letters, digits and '_'", name);
+  PetscCall(PetscNew(out));
+  PetscCall(PetscStrncpy((*out)->name, name, sizeof((*out)->name)));
+  PetscFunctionReturn(0);
+}
+
+diagnostic *diagnostics_find(const sim *s, const char *name) {
+  for (int k = 0; k < s->n_diagnostics; k++)
+    if (!strcmp(s->diagnostics[k]->name, name))
+      return s->diagnostics[k];
+  return NULL;
+}
+
+PetscErrorCode diagnostics_add(sim *s, diagnostic *d) {
+  static PetscClassId id = 0;
+  char event[80];
+  PetscFunctionBeginUser;
+  PetscCheck(d->sample, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "diagnostic %s has no sample",
+             d->name);
+  PetscCheck(!diagnostics_find(s, d->name), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "diagnostic %s registered twice", d->name);
+  PetscCheck(s->n_diagnostics < SIM_MAX_DIAGNOSTICS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "more than %d diagnostics", SIM_MAX_DIAGNOSTICS);
+  PetscCheck(d->when.every_steps >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "diagnostic %s: every_steps %" PetscInt_FMT " < 0", d->name, d->when.every_steps);
+  /* PETSc returns the event already registered under a name: one per name, whatever
+   * the number of runs in the process (the unit tests) */
+  PetscCall(PetscSNPrintf(event, sizeof(event), "Diag:%s", d->name));
+  if (!id)
+    PetscCall(PetscClassIdRegister("dmhs diagnostic", &id));
+  PetscCall(PetscLogEventRegister(event, id, &d->event));
+  s->diagnostics[s->n_diagnostics++] = d;
+  PetscFunctionReturn(0);
+}
+
+PetscBool diagnostic_output_time(const sim *s) {
+  return s->step == 0 || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscBool diagnostic_is_due(const diagnostic *d, const sim *s) {
+  const diagnostic_schedule *w = &d->when;
+  if (!(s->step == 0 && w->not_at_start)) {
+    if (w->every_steps > 0 && s->step % w->every_steps == 0)
+      return PETSC_TRUE;
+    if (w->at_outputs && diagnostic_output_time(s))
+      return PETSC_TRUE;
+  }
+  return d->due ? d->due(d, s) : PETSC_FALSE;
+}
+
+PetscErrorCode diagnostics_sample(sim *s) {
+  PetscFunctionBeginUser;
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    if (!diagnostic_is_due(d, s))
+      continue;
+    PetscCall(PetscLogEventBegin(d->event, 0, 0, 0, 0));
+    PetscCall(d->sample(d, s));
+    PetscCall(PetscLogEventEnd(d->event, 0, 0, 0, 0));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode diagnostics_finish(sim *s) {
+  PetscFunctionBeginUser;
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    if (d->finish)
+      PetscCall(d->finish(d, s));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode diagnostics_destroy(sim *s) {
+  PetscFunctionBeginUser;
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    if (d->destroy)
+      PetscCall(d->destroy(d));
+    PetscCall(PetscFree(s->diagnostics[k]));
+  }
+  s->n_diagnostics = 0;
+  PetscFunctionReturn(0);
+}
