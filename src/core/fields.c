@@ -36,9 +36,11 @@ static const field_desc table[] = {
     ROW(x_build, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT, "m"),
     ROW(mass, 1, FIELD_REAL, ALL | FIELD_FIXED, "kg"),
     ROW(rho, 1, FIELD_REAL, ALL, "kg/m^3"),
-    ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT, "kg/m^3/s"),
-    /* p is recomputed before use; checkpointed so a restarted state is complete */
-    ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT, "Pa"),
+    ROW(drho, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL,
+        "kg/m^3/s"),
+    /* drho and p are the SPH module's (it enables them): a run without liquid has neither.
+     * p is recomputed before use; checkpointed so a restarted state is complete */
+    ROW(p, 1, FIELD_REAL, FIELD_GHOST | FIELD_CHECKPOINT | FIELD_OUTPUT | FIELD_OPTIONAL, "Pa"),
     /* optional: which solid body a particle belongs to (0 = none / walls), so
      * that repulsion can keep two bodies (the vein's leaflets) apart */
     ROW(body, 1, FIELD_INT, ALL | FIELD_OPTIONAL | FIELD_FIXED, "1"),

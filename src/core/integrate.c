@@ -161,12 +161,20 @@ static PetscBool integrate_state_ok(const sim *s) {
     hi[k] = s->dom.periodic[k] ? INFINITY : s->dom.hi[k];
   }
   unsigned bad = 0;
-  for (PetscInt i = 0; i < ps->n_owned; i++)
-    bad |= not_finite(ps->x[i][0]) | not_finite(ps->x[i][1]) | not_finite(ps->v[i][0]) |
-           not_finite(ps->v[i][1]) | not_finite(ps->rho[i]) | not_finite(ps->p[i]) |
-           not_finite(ps->a[i][0]) | not_finite(ps->a[i][1]) | not_finite(ps->drho[i]) |
-           (ps->rho[i] <= 0) | (ps->x[i][0] < lo[0]) | (ps->x[i][0] > hi[0]) |
-           (ps->x[i][1] < lo[1]) | (ps->x[i][1] > hi[1]);
+  if (ps->p && ps->drho) /* with SPH: one pass over everything */
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      bad |= not_finite(ps->x[i][0]) | not_finite(ps->x[i][1]) | not_finite(ps->v[i][0]) |
+             not_finite(ps->v[i][1]) | not_finite(ps->rho[i]) | not_finite(ps->p[i]) |
+             not_finite(ps->a[i][0]) | not_finite(ps->a[i][1]) | not_finite(ps->drho[i]) |
+             (ps->rho[i] <= 0) | (ps->x[i][0] < lo[0]) | (ps->x[i][0] > hi[0]) |
+             (ps->x[i][1] < lo[1]) | (ps->x[i][1] > hi[1]);
+  else
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      bad |= not_finite(ps->x[i][0]) | not_finite(ps->x[i][1]) | not_finite(ps->v[i][0]) |
+             not_finite(ps->v[i][1]) | not_finite(ps->rho[i]) | not_finite(ps->a[i][0]) |
+             not_finite(ps->a[i][1]) | (ps->p && not_finite(ps->p[i])) |
+             (ps->drho && not_finite(ps->drho[i])) | (ps->rho[i] <= 0) | (ps->x[i][0] < lo[0]) |
+             (ps->x[i][0] > hi[0]) | (ps->x[i][1] < lo[1]) | (ps->x[i][1] > hi[1]);
   return bad ? PETSC_FALSE : PETSC_TRUE;
 }
 
@@ -183,11 +191,11 @@ PetscErrorCode integrate_check_state(sim *s) {
       bad = "velocity";
     else if (!isfinite(ps->rho[i]) || ps->rho[i] <= 0)
       bad = "density";
-    else if (!isfinite(ps->p[i]))
+    else if (ps->p && !isfinite(ps->p[i]))
       bad = "pressure";
     else if (!isfinite(ps->a[i][0]) || !isfinite(ps->a[i][1]))
       bad = "acceleration";
-    else if (!isfinite(ps->drho[i]))
+    else if (ps->drho && !isfinite(ps->drho[i]))
       bad = "density rate";
     PetscCheck(
         bad || domain_contains(&s->dom, ps->x[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
@@ -202,7 +210,7 @@ PetscErrorCode integrate_check_state(sim *s) {
                ") has a non-finite or invalid %s (x = %g %g, v = %g %g, a = %g %g, "
                "rho = %g, drho/dt = %g); try a smaller -dt (see the stability report)",
                s->step, s->t, ps->gid[i], ps->type[i], bad, ps->x[i][0], ps->x[i][1], ps->v[i][0],
-               ps->v[i][1], ps->a[i][0], ps->a[i][1], ps->rho[i], ps->drho[i]);
+               ps->v[i][1], ps->a[i][0], ps->a[i][1], ps->rho[i], ps->drho ? ps->drho[i] : 0.0);
   }
   PetscCall(PetscLogEventEnd(events.check_state, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -85,8 +85,10 @@ PetscErrorCode particles_add_owned(particles *ps, PetscInt64 gid, particle_type 
   }
   ps->mass[i] = mass;
   ps->rho[i] = rho;
-  ps->drho[i] = 0.0;
-  ps->p[i] = 0.0;
+  if (ps->drho)
+    ps->drho[i] = 0.0;
+  if (ps->p)
+    ps->p[i] = 0.0;
   if (index)
     *index = i;
   PetscFunctionReturn(0);
@@ -115,7 +117,8 @@ void particles_retire(particles *ps, PetscInt i, const double x_rest[DMHS_DIM], 
       ps->a_hold[i][d] = 0;
   }
   ps->rho[i] = rho_rest;
-  ps->drho[i] = 0;
+  if (ps->drho)
+    ps->drho[i] = 0;
   if (ps->drho_prev)
     ps->drho_prev[i] = 0;
 }

@@ -28,7 +28,8 @@ PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
   PetscFunctionBeginUser;
   PetscCall(PetscArrayzero(ps->a, n));
-  PetscCall(PetscArrayzero(ps->drho, n));
+  if (ps->drho) /* runs without liquid have no density rates */
+    PetscCall(PetscArrayzero(ps->drho, n));
   PetscCall(sim_add_module_forces(s, keep));
   PetscFunctionReturn(0);
 }

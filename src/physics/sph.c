@@ -129,6 +129,8 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(!sp->density_predict || sp->density == SPH_DENSITY_CONTINUITY, s->comm,
              PETSC_ERR_ARG_INCOMP, "-sph_density_predict needs -sph_density continuity");
+  PetscCall(fields_enable("drho")); /* the continuity rates, zero with summation */
+  PetscCall(fields_enable("p"));
   if (sp->density_predict)
     PetscCall(fields_enable("drho_prev"));
   if (!((sph_data *)self->data)->no_walls) /* the walls' velocity for the viscous term */

@@ -29,8 +29,8 @@ typedef struct {
 
 /* The always-present rows. v_est is derived in the first half step (not
  * checkpointed, not written); v_visc (optional: with walls) is rebuilt by the wall
- * pass before every force sweep (ghosts only); p is recomputed before use, so it is not
- * migrated; x_build is internal (not written); gid, type, mass (and the
+ * pass before every force sweep (ghosts only); drho and p are the SPH module's (optional,
+ * below); x_build is internal (not written); gid, type, mass (and the
  * optional body and marks) change only at a neighbour build (F: ghosts keep their build's
  * copy, no refresh between builds sends them). */
 static const expected_row base[] = {
@@ -43,8 +43,6 @@ static const expected_row base[] = {
     {"x_build", 2, FIELD_REAL, M | C, offsetof(particles, x_build)},
     {"mass", 1, FIELD_REAL, M | G | C | O | F, offsetof(particles, mass)},
     {"rho", 1, FIELD_REAL, M | G | C | O, offsetof(particles, rho)},
-    {"drho", 1, FIELD_REAL, M | C | O, offsetof(particles, drho)},
-    {"p", 1, FIELD_REAL, G | C | O, offsetof(particles, p)},
 };
 #define N_BASE (sizeof(base) / sizeof(base[0]))
 
@@ -92,6 +90,7 @@ static void test_row_bytes_and_member(void **state) {
   /* fields_member is the address of the pointer member itself */
   assert_true(fields_member(&ps, fields_find("x")) == (void **)&ps.x);
   assert_true(fields_member(&ps, fields_find("v_est")) == (void **)&ps.v_est);
+  OK(fields_enable("p"));
   assert_true(fields_member(&ps, fields_find("p")) == (void **)&ps.p);
   assert_true(fields_member(&ps, fields_find("gid")) == (void **)&ps.gid);
 }
@@ -133,6 +132,19 @@ static void test_optional_rows(void **state) {
   assert_null(fields_find("tag")); /* gone: one field per use */
   t = fields_table(&n);
   assert_int_equal(n, N_BASE + 5);
+  /* the SPH module's: the density rate (p is recomputed before use, so it is not migrated) */
+  assert_null(fields_find("p"));
+  OK(fields_enable("drho"));
+  OK(fields_enable("p"));
+  assert_int_equal(fields_find("drho")->flags, M | C | O | FIELD_OPTIONAL);
+  assert_int_equal(fields_find("p")->flags, G | C | O | FIELD_OPTIONAL);
+  t = fields_table(&n);
+  assert_int_equal(n, N_BASE + 7);
+  size_t at_rho = 0; /* table order: right after rho */
+  while (at_rho + 2 < n && strcmp(t[at_rho].name, "rho"))
+    at_rho++;
+  assert_string_equal(t[at_rho + 1].name, "drho");
+  assert_string_equal(t[at_rho + 2].name, "p");
   fields_reset();
   t = fields_table(&n);
   assert_int_equal(n, N_BASE);

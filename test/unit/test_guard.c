@@ -17,6 +17,7 @@ static void make_sim(sim *s) {
   s->comm = PETSC_COMM_SELF;
   s->dom.lo[0] = s->dom.lo[1] = -1;
   s->dom.hi[0] = s->dom.hi[1] = 1;
+  OK(unit_enable_sph_fields());
   OK(particles_create(&s->ps));
   const double x[2] = {0.1, 0.2}, v[2] = {0, 0};
   for (int k = 0; k < 3; k++)

@@ -53,6 +53,7 @@ static void make_sim(sim *s, sph_density_kind density) {
   s->modules[0] = &liquid;
   s->n_modules = 1;
   s->dt = 1e-3;
+  OK(unit_enable_sph_fields());
   OK(particles_create(&s->ps));
 }
 

@@ -140,6 +140,7 @@ static void test_partition_and_migrate(void **state) {
   OK(fields_enable("a_hold"));
   OK(fields_enable("x0"));
   OK(fields_enable("tracer"));
+  OK(unit_enable_sph_fields());
   OK(particles_create(&s.ps));
   for (PetscInt64 k = 0; k < N; k++) {
     double x[2];

@@ -30,6 +30,7 @@ static int reset(void **state) {
   OK(fields_enable("x0"));
   OK(fields_enable("tracer"));
   OK(fields_enable("v_visc"));
+  OK(unit_enable_sph_fields());
   return 0;
 }
 

@@ -150,6 +150,7 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
   s->pair_cutoff = h;
   fields_reset();
   OK(fields_enable("v_visc")); /* the sweeps' viscous velocity, as with walls */
+  OK(unit_enable_sph_fields());
   OK(particles_create(&s->ps));
   for (PetscInt i = 0; i < n; i++) {
     double x[2] = {unit_range(g, 0.0, 0.5), unit_range(g, 0.0, 0.35)};

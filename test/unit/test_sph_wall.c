@@ -57,6 +57,7 @@ static void build(const spec *sp, int n, sph_kernel_kind kernel, const double g[
   g_body[1] = g[1];
   fields_reset();
   OK(fields_enable("v_visc")); /* what the wall pass extrapolates */
+  OK(unit_enable_sph_fields());
   if (wall == SPH_WALL_QUADRATIC)
     OK(fields_enable("to_surface"));
   OK(particles_create(&s.ps));

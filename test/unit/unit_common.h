@@ -12,6 +12,7 @@
 #include <cmocka.h>
 #include <petscsys.h>
 #include "dmhs/events.h"
+#include "dmhs/fields.h"
 
 /* A PETSc call that must succeed. */
 #define OK(call) assert_int_equal((int)(call), 0)
@@ -23,6 +24,13 @@
     if (!(fabs(a_ - b_) <= t_))                                                                    \
       fail_msg("%s = %.17g vs %s = %.17g: |diff| %.3e > %.3e", #a, a_, #b, b_, fabs(a_ - b_), t_); \
   } while (0)
+
+/* The SPH module's fields (drho, p: it enables them in its options pass), for the tests
+ * that drive SPH sweeps, the integrator or the state check without the module. */
+static inline PetscErrorCode unit_enable_sph_fields(void) {
+  const PetscErrorCode e = fields_enable("drho");
+  return e ? e : fields_enable("p");
+}
 
 static inline int unit_petsc_setup(void **state) {
   (void)state;
