@@ -52,8 +52,9 @@ set_tests_properties(validation_peristaltic_restart PROPERTIES LABELS "validatio
 # scripts/post/plot_peristaltic.py on the three quick runs: fails when an input
 # is bad or the PNG is not written.
 set(DMHS_PERISTALTIC_PNG ${DMHS_PERISTALTIC_OUT}/peristaltic_flux.png)
+string(REPLACE ";" " " DMHS_PERISTALTIC_DIRS_STR "${DMHS_PERISTALTIC_DIRS}")
 add_test(NAME validation_peristaltic_plot
-         COMMAND sh -c "rm -f ${DMHS_PERISTALTIC_PNG} && ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_peristaltic.py ${DMHS_PERISTALTIC_DIRS} --out ${DMHS_PERISTALTIC_PNG} && test -s ${DMHS_PERISTALTIC_PNG}")
+         COMMAND sh -c "rm -f ${DMHS_PERISTALTIC_PNG} && ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_peristaltic.py ${DMHS_PERISTALTIC_DIRS_STR} --out ${DMHS_PERISTALTIC_PNG} && test -s ${DMHS_PERISTALTIC_PNG}")
 set_tests_properties(validation_peristaltic_plot PROPERTIES LABELS validation TIMEOUT 60
                      FIXTURES_REQUIRED "peristaltic_phi02;peristaltic_phi05;peristaltic_phi08")
 # ... and refuses a directory without flux.csv.
