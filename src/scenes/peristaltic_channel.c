@@ -7,9 +7,10 @@
  *
  * Defaults follow a, so that any one option changed alone is still a sound run: the
  * spacing dx = a/ny, h = 3 dx, the wavelength 40 a (a/lambda = 0.025), the viscosity
- * nu = c a/0.1 (Re = c a/nu = 0.1), and the sound speed from the lubrication
- * solution's pressure range dp: c0 = max(20 c, sqrt(dp/(2 rho0 0.02))), a density
- * deviation of about 2 % and Mach below 0.1 (the liquid moves at up to ~1.5 c). */
+ * nu = c a/0.1 (Re = c a/nu = 0.1), and the sound speed
+ * c0 = max(20 c, 2 nu/h_s, sqrt(dp/(2 rho0 0.03))), dp the lubrication solution's
+ * pressure range: a density deviation of about 3 % and Mach below 0.1 (the liquid
+ * moves at up to ~1.5 c). */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
