@@ -29,4 +29,17 @@ double analytic_womersley_periodic(double y, double t, double g0, double w, doub
  * the pulsatile channel's error (a pulsatile flow passes through zero). */
 double analytic_womersley_amplitude(double g0, double w, double nu, double l);
 
+/* Peristaltic pumping at long wavelength and low Reynolds number (Shapiro, Jaffrin &
+ * Weinberg 1969): walls y = +-h, h = a + b sin(2 pi (x - c t)/lambda), no pressure rise
+ * over a wavelength. In the wave frame the flow is steady lubrication flow between walls
+ * moving at -c, with volume flux q = -2 c <h^-2>/<h^-3> (per unit depth, <.> the mean
+ * over a wavelength); the lab frame's time-mean flux is
+ *   Q = q + 2 c a = 2 a c 3 phi^2/(2 + phi^2),  phi = b/a   [m^2/s]. */
+double analytic_peristaltic_flux(double a, double b, double c);
+/* The range max p - min p [Pa] of that flow's pressure along the wavelength, of
+ *   dp/dx = -3 mu (q + 2 c h)/(2 h^3),  mu = rho0 nu
+ * (midpoint quadrature of 4096 points): the scale of the liquid's density deviation,
+ * which sets the peristaltic scene's sound speed. */
+double analytic_peristaltic_pressure_range(double a, double b, double lambda, double c, double mu);
+
 #endif

@@ -84,3 +84,28 @@ double analytic_womersley_periodic(double y, double t, double g0, double w, doub
 double analytic_womersley_amplitude(double g0, double w, double nu, double l) {
   return cabs(g0 / (I * w) * womersley_shape(0.0, 0.5 * l, w, nu));
 }
+
+double analytic_peristaltic_flux(double a, double b, double c) {
+  const double phi = b / a;
+  return 2.0 * a * c * 3.0 * phi * phi / (2.0 + phi * phi);
+}
+
+double analytic_peristaltic_pressure_range(double a, double b, double lambda, double c, double mu) {
+  enum { N = 4096 };
+  const double dx = lambda / N;
+  double mean_h2 = 0, mean_h3 = 0;
+  for (int k = 0; k < N; k++) {
+    const double h = a + b * sin(2.0 * M_PI * (k + 0.5) / N);
+    mean_h2 += 1.0 / (h * h * N);
+    mean_h3 += 1.0 / (h * h * h * N);
+  }
+  const double q = -2.0 * c * mean_h2 / mean_h3;
+  double p = 0, p_min = 0, p_max = 0;
+  for (int k = 0; k < N; k++) {
+    const double h = a + b * sin(2.0 * M_PI * (k + 0.5) / N);
+    p += -3.0 * mu * (q + 2.0 * c * h) / (2.0 * h * h * h) * dx;
+    p_min = p < p_min ? p : p_min;
+    p_max = p > p_max ? p : p_max;
+  }
+  return p_max - p_min;
+}

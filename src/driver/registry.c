@@ -19,6 +19,7 @@ static const struct {
     {"flap", flap_scene_create},
     {"intestine", intestine_scene_create}, /* doc/cases.md */
     {"vein", vein_scene_create},
+    {"peristaltic_channel", peristaltic_channel_scene_create}, /* oracle: Shapiro et al. */
 };
 
 #define N_SCENES (sizeof(scene_table) / sizeof(scene_table[0]))

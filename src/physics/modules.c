@@ -12,6 +12,7 @@
 #include "dmhs/solid_load.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/agglomeration.h"
+#include "dmhs/wall_wave.h"
 
 static const struct {
   const char *name;
@@ -27,6 +28,7 @@ static const struct {
     {"solid_load", solid_load_module_create},
     {"peristalsis", peristalsis_module_create},     /* intestine */
     {"agglomeration", agglomeration_module_create}, /* vein clots */
+    {"wall_wave", wall_wave_module_create},         /* peristaltic channel */
 };
 
 #define N_MODULES (sizeof(module_table) / sizeof(module_table[0]))

@@ -14,11 +14,11 @@
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
 
-static const char *const scene_names[] = {"poiseuille", "couette",   "box", "cantilever",
-                                          "flap",       "intestine", "vein"};
+static const char *const scene_names[] = {"poiseuille", "couette",   "box",  "cantilever",
+                                          "flap",       "intestine", "vein", "peristaltic_channel"};
 static const char *const module_names[] = {
     "sph",       "body_force", "bond_harmonic", "bond_nonlinear", "angle_harmonic",
-    "repulsion", "solid_load", "peristalsis",   "agglomeration"};
+    "repulsion", "solid_load", "peristalsis",   "agglomeration",  "wall_wave"};
 #define N_SCENES  (sizeof(scene_names) / sizeof(scene_names[0]))
 #define N_MODULES (sizeof(module_names) / sizeof(module_names[0]))
 
@@ -103,17 +103,18 @@ static void test_scene_names(void **state) {
   (void)state;
   char buf[256];
   OK(registry_scene_names(buf, sizeof(buf)));
-  assert_string_equal(buf, "poiseuille, couette, box, cantilever, flap, intestine, vein");
+  assert_string_equal(buf, "poiseuille, couette, box, cantilever, flap, intestine, vein, "
+                           "peristaltic_channel");
   /* exactly big enough: the whole list */
   const size_t need = strlen(buf) + 1;
-  char exact[80];
+  char exact[128];
   assert_true(need <= sizeof(exact));
   OK(registry_scene_names(exact, need));
   assert_string_equal(exact, buf);
   /* one byte short, or much too small: an error, nothing written past the buffer */
   memset(exact, 'x', sizeof(exact));
   assert_int_equal(registry_scene_names(exact, need - 1), PETSC_ERR_ARG_SIZ);
-  assert_string_equal(exact, "poiseuille, couette, box, cantilever, flap, intestine, ");
+  assert_string_equal(exact, "poiseuille, couette, box, cantilever, flap, intestine, vein, ");
   assert_int_equal(exact[need - 1], 'x');
   memset(exact, 'x', sizeof(exact));
   assert_int_equal(registry_scene_names(exact, 12), PETSC_ERR_ARG_SIZ);
