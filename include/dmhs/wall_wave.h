@@ -16,7 +16,5 @@ PetscErrorCode wall_wave_module_create(module **m);
  * y = +-a), amplitude b [m], wavelength lambda [m], wave speed c [m/s] along +x.
  * Call before the module's options pass. */
 PetscErrorCode wall_wave_set(module *m, double a, double b, double lambda, double c);
-/* The wall surface's half-width h(x, t) [m] and its time derivative dh/dt [m/s]. */
-void wall_wave_surface(const module *m, double x, double t, double *h, double *dhdt);
 
 #endif

@@ -33,13 +33,6 @@ PetscErrorCode wall_wave_set(module *m, double a, double b, double lambda, doubl
   PetscFunctionReturn(0);
 }
 
-void wall_wave_surface(const module *m, double x, double t, double *h, double *dhdt) {
-  const wall_wave_data *d = m->data;
-  const double k = 2.0 * M_PI / d->lambda, phase = k * (x - d->c * t);
-  *h = d->a + d->b * sin(phase);
-  *dhdt = -d->b * k * d->c * cos(phase);
-}
-
 static PetscErrorCode wall_wave_set_from_options(module *self, sim *s) {
   const wall_wave_data *d = self->data;
   PetscFunctionBeginUser;
