@@ -144,6 +144,9 @@ PetscErrorCode topology_store_bond(topology *t, PetscInt64 id, PetscInt64 gi, Pe
                                    PetscInt type, double r0);
 PetscErrorCode topology_store_angle(topology *t, PetscInt64 id, const PetscInt64 gid[3],
                                     PetscInt type);
+/* Copies store entry src over entry dst (compacting the store after removals). */
+void topology_move_bond(topology *t, PetscInt dst, PetscInt src);
+void topology_move_angle(topology *t, PetscInt dst, PetscInt src);
 /* Empties the store, keeping the claims and options (a restart loads its own). */
 void topology_clear(topology *t);
 

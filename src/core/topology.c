@@ -154,6 +154,25 @@ PetscErrorCode topology_add_angle(topology *t, PetscInt64 gi, PetscInt64 gj, Pet
   PetscFunctionReturn(0);
 }
 
+void topology_move_bond(topology *t, PetscInt dst, PetscInt src) {
+  if (dst == src)
+    return;
+  t->bond_gid[dst][0] = t->bond_gid[src][0];
+  t->bond_gid[dst][1] = t->bond_gid[src][1];
+  t->bond_type[dst] = t->bond_type[src];
+  t->bond_r0[dst] = t->bond_r0[src];
+  t->bond_id[dst] = t->bond_id[src];
+}
+
+void topology_move_angle(topology *t, PetscInt dst, PetscInt src) {
+  if (dst == src)
+    return;
+  for (int k = 0; k < 3; k++)
+    t->angle_gid[dst][k] = t->angle_gid[src][k];
+  t->angle_type[dst] = t->angle_type[src];
+  t->angle_id[dst] = t->angle_id[src];
+}
+
 void topology_clear(topology *t) {
   t->n_bonds = t->n_angles = 0;
   t->n_bonds_global = t->n_angles_global = 0;
@@ -411,14 +430,7 @@ static PetscBool topology_prune(topology *t) {
     if (t->owned[topology_slot_of(t, t->bond_gid[b][0])] < 0 &&
         t->owned[topology_slot_of(t, t->bond_gid[b][1])] < 0)
       continue;
-    if (kept != b) {
-      t->bond_gid[kept][0] = t->bond_gid[b][0];
-      t->bond_gid[kept][1] = t->bond_gid[b][1];
-      t->bond_type[kept] = t->bond_type[b];
-      t->bond_r0[kept] = t->bond_r0[b];
-      t->bond_id[kept] = t->bond_id[b];
-    }
-    kept++;
+    topology_move_bond(t, kept++, b);
   }
   t->n_bonds = kept;
   kept = 0;
@@ -429,13 +441,7 @@ static PetscBool topology_prune(topology *t) {
         mine = PETSC_TRUE;
     if (!mine)
       continue;
-    if (kept != a) {
-      for (int k = 0; k < 3; k++)
-        t->angle_gid[kept][k] = t->angle_gid[a][k];
-      t->angle_type[kept] = t->angle_type[a];
-      t->angle_id[kept] = t->angle_id[a];
-    }
-    kept++;
+    topology_move_angle(t, kept++, a);
   }
   t->n_angles = kept;
   return t->n_bonds < nb || t->n_angles < na ? PETSC_TRUE : PETSC_FALSE;

@@ -97,6 +97,16 @@ static PetscErrorCode topology_allgather(MPI_Comm comm, const topology_msg *mine
   PetscFunctionReturn(0);
 }
 
+/* Every rank's entries on every rank, ordered by their gids (not by rank): what makes
+ * the collective changes rank-count invariant. */
+static PetscErrorCode topology_gather_sorted(MPI_Comm comm, const topology_msg *mine, PetscInt n,
+                                             topology_msg **all, PetscInt *n_all) {
+  PetscFunctionBeginUser;
+  PetscCall(topology_allgather(comm, mine, n, all, n_all));
+  qsort(*all, (size_t)*n_all, sizeof(topology_msg), cmp_msg_gids);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode topology_add_bonds(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
                                   const PetscInt64 (*gid)[2], const PetscInt *type,
                                   const double *r0) {
@@ -110,8 +120,7 @@ PetscErrorCode topology_add_bonds(topology *t, const particles *ps, MPI_Comm com
     PetscCall(topology_check_bond(gid[k][0], gid[k][1], type[k], r0 ? r0[k] : 0.0));
     mine[k] = (topology_msg){-1, {gid[k][0], gid[k][1], -1}, type[k], r0 ? r0[k] : 0.0};
   }
-  PetscCall(topology_allgather(comm, mine, n, &all, &n_all));
-  qsort(all, (size_t)n_all, sizeof(topology_msg), cmp_msg_gids);
+  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
   PetscCall(topology_owned_lookup(ps, &og, &orow));
   for (PetscInt k = 0; k < n_all; k++) {
     const topology_msg *m = &all[k];
@@ -142,8 +151,7 @@ PetscErrorCode topology_add_angles(topology *t, const particles *ps, MPI_Comm co
     PetscCall(topology_check_angle(gid[k], type[k]));
     mine[k] = (topology_msg){-1, {gid[k][0], gid[k][1], gid[k][2]}, type[k], 0.0};
   }
-  PetscCall(topology_allgather(comm, mine, n, &all, &n_all));
-  qsort(all, (size_t)n_all, sizeof(topology_msg), cmp_msg_gids);
+  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
   PetscCall(topology_owned_lookup(ps, &og, &orow));
   for (PetscInt k = 0; k < n_all; k++) {
     const topology_msg *m = &all[k];
@@ -195,8 +203,7 @@ PetscErrorCode topology_remove_bonds(topology *t, const particles *ps, MPI_Comm 
   for (PetscInt k = 0; k < n; k++) /* either order: listed as (lower, higher) */
     mine[k] = (topology_msg){
         -1, {PetscMin(gid[k][0], gid[k][1]), PetscMax(gid[k][0], gid[k][1]), -1}, 0, 0.0};
-  PetscCall(topology_allgather(comm, mine, n, &all, &n_all));
-  qsort(all, (size_t)n_all, sizeof(topology_msg), cmp_msg_gids);
+  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
   PetscCall(topology_owned_lookup(ps, &og, &orow));
   for (PetscInt b = 0; b < t->n_bonds; b++) {
     const PetscInt64 g[3] = {PetscMin(t->bond_gid[b][0], t->bond_gid[b][1]),
@@ -206,14 +213,7 @@ PetscErrorCode topology_remove_bonds(topology *t, const particles *ps, MPI_Comm 
         removed[t->bond_type[b]]++;
       continue;
     }
-    if (kept != b) {
-      t->bond_gid[kept][0] = t->bond_gid[b][0];
-      t->bond_gid[kept][1] = t->bond_gid[b][1];
-      t->bond_type[kept] = t->bond_type[b];
-      t->bond_r0[kept] = t->bond_r0[b];
-      t->bond_id[kept] = t->bond_id[b];
-    }
-    kept++;
+    topology_move_bond(t, kept++, b);
   }
   t->n_bonds = kept;
   t->dirty = PETSC_TRUE;
@@ -240,8 +240,7 @@ PetscErrorCode topology_remove_angles(topology *t, const particles *ps, MPI_Comm
   for (PetscInt k = 0; k < n; k++) /* the arms in either order: (lower, centre, higher) */
     mine[k] = (topology_msg){
         -1, {PetscMin(gid[k][0], gid[k][2]), gid[k][1], PetscMax(gid[k][0], gid[k][2])}, 0, 0.0};
-  PetscCall(topology_allgather(comm, mine, n, &all, &n_all));
-  qsort(all, (size_t)n_all, sizeof(topology_msg), cmp_msg_gids);
+  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
   PetscCall(topology_owned_lookup(ps, &og, &orow));
   for (PetscInt a = 0; a < t->n_angles; a++) {
     const PetscInt64 *ag = t->angle_gid[a];
@@ -251,13 +250,7 @@ PetscErrorCode topology_remove_angles(topology *t, const particles *ps, MPI_Comm
         removed++;
       continue;
     }
-    if (kept != a) {
-      for (int k = 0; k < 3; k++)
-        t->angle_gid[kept][k] = ag[k];
-      t->angle_type[kept] = t->angle_type[a];
-      t->angle_id[kept] = t->angle_id[a];
-    }
-    kept++;
+    topology_move_angle(t, kept++, a);
   }
   t->n_angles = kept;
   t->dirty = PETSC_TRUE;
