@@ -28,6 +28,7 @@
 #include "dmhs/peristalsis.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
+#include "dmhs/sph.h"
 
 typedef struct {
   PetscInt n_pockets; /* N + 1 */
@@ -297,6 +298,34 @@ static PetscErrorCode peristalsis_max_dt(module *self, sim *s, dt_limits *l) {
   PetscFunctionReturn(0);
 }
 
+/* Pre-flight: the membrane's peak speed under the wave, against the liquid's sound
+ * speed. A segment lifts by about F/k_s within the smoothstep's switching time
+ * ramp t_w, at up to U_m = 1.5 (F/k_s)/(ramp t_w); the liquid the wave squeezes out
+ * and throws off moves at up to ~3 U_m (measured 2.7 U_m for the study's fastest
+ * wave, doc/validation.md "Intestine"), so Mach <= 0.1 asks c0 >= 30 U_m. A warning,
+ * not an error: the estimate comes from one measured case. */
+static PetscErrorCode peristalsis_preflight(module *self, sim *s, int *problems) {
+  const peri_data *d = self->data;
+  PetscFunctionBeginUser;
+  (void)problems;
+  if (d->ramp <= 0 || d->support <= 0 || !sim_find_module(s, "sph"))
+    PetscFunctionReturn(0);
+  const double u_m = 1.5 * (d->force / d->support) / (d->ramp * d->t_w);
+  const double c0 = sph_params_get(s)->c0, need = 30.0 * u_m;
+  PetscCall(PetscPrintf(s->comm,
+                        "  %-18s U_m = 1.5 (F/k_s)/(ramp t_w) = %.3g m/s: the liquid it throws "
+                        "reaches ~3 U_m; Mach <= 0.1 asks c0 >= 30 U_m = %.3g m/s (c0 = %.3g)%s\n",
+                        "membrane speed", u_m, need, c0, c0 < need ? "  LOW" : ""));
+  if (c0 < need)
+    PetscCall(
+        PetscPrintf(s->comm,
+                    "WARNING: -sph_c0 %.3g m/s is below 30 U_m = %.3g m/s for this wave: expect "
+                    "Mach > 0.1 (raise -sph_c0; measured for the fastest wave of the study: "
+                    "-sph_c0 15 -sph_av_alpha 0.1, doc/validation.md)\n",
+                    c0, need));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode peristalsis_view(module *self, sim *s, PetscViewer v) {
   const peri_data *d = self->data;
   PetscFunctionBeginUser;
@@ -336,6 +365,7 @@ PetscErrorCode peristalsis_module_create(module **m) {
   (*m)->name = "peristalsis";
   (*m)->set_from_options = peristalsis_set_from_options;
   (*m)->setup = peristalsis_setup;
+  (*m)->preflight = peristalsis_preflight;
   (*m)->compute = peristalsis_compute;
   (*m)->max_dt = peristalsis_max_dt;
   (*m)->view = peristalsis_view;

@@ -116,7 +116,8 @@ foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081
              "L111|-output_dir <output/intestine-L111>.*-intestine_level <0.0111>"
              "L157|-output_dir <output/intestine-L157>.*-intestine_level <0.0157>"
              "new-wave|-output_dir <output/intestine-new-wave>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <5>"
-             "old-wave-red|-output_dir <output/intestine-old-wave-red>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <2>")
+             "old-wave-red|-output_dir <output/intestine-old-wave-red>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <2>"
+             "fast-wave|-output_dir <output/intestine-fast-wave>.*-sph_c0 <15>.*-sph_av_alpha <0.1>.*-peristalsis_tw <0.0334448>")
   string(FIND "${case}" "|" bar)
   string(SUBSTRING "${case}" 0 ${bar} name)
   math(EXPR bar "${bar} + 1")
@@ -153,3 +154,15 @@ add_test(NAME cli_box_without_v_visc COMMAND ${DMHS_EXPECT_OUTPUT}
   -- ${DMHS_EXE} -scene box -box_nx 20 -box_ny 20 -dt 1e-6 -t_end 2e-5 -sph_kernel_correction true
   -sph_force_sweep pairs -quiet -output_dir ${DMHS_CLI_OUT}/box_no_v_visc)
 set_tests_properties(cli_box_without_v_visc PROPERTIES LABELS cli TIMEOUT 60)
+# a wave too fast for the sound speed is named before the run (the membrane's peak speed against
+# -sph_c0), and the quick colon's own wave is not
+add_test(NAME cli_intestine_fast_wave_warning COMMAND ${DMHS_EXPECT_OUTPUT}
+  "membrane speed +U_m = 1.5 \\(F/k_s\\)/\\(ramp t_w\\) = 1.5 m/s.*LOW.*WARNING: -sph_c0 5 m/s is below 30 U_m = 45 m/s"
+  -- ${DMHS_EXE} -options_file ${DMHS_INPUT}/intestine-quick.opts -peristalsis_tw 0.006 -t_end 1e-5
+  -output_snapshots false -output_dir ${DMHS_CLI_OUT}/fast-wave)
+set_tests_properties(cli_intestine_fast_wave_warning PROPERTIES LABELS cli TIMEOUT 60)
+add_test(NAME cli_intestine_wave_speed_ok COMMAND ${DMHS_EXPECT_OUTPUT}
+  "membrane speed +U_m = .* m/s: .*asks c0 >= 30 U_m = 4.5 m/s \\(c0 = 5\\)" --reject "LOW|WARNING"
+  -- ${DMHS_EXE} -options_file ${DMHS_INPUT}/intestine-quick.opts -t_end 1e-5
+  -output_snapshots false -output_dir ${DMHS_CLI_OUT}/slow-wave)
+set_tests_properties(cli_intestine_wave_speed_ok PROPERTIES LABELS cli TIMEOUT 60)
