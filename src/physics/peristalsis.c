@@ -45,6 +45,8 @@ typedef struct {
   PetscInt rows;  /* R */
   signed char *S; /* R x n_pockets */
   PetscInt n_seg; /* tagged solids over all ranks */
+  double m_min;   /* the smallest solid mass over all ranks, once (masses stay) */
+  PetscBool have_m_min;
 } peri_data;
 
 int peristalsis_spec_value(PetscInt n_pockets, PetscInt H, PetscInt r, PetscInt k) {
@@ -283,13 +285,18 @@ static PetscErrorCode peristalsis_compute(module *self, sim *s) {
 }
 
 static PetscErrorCode peristalsis_max_dt(module *self, sim *s, dt_limits *l) {
-  const peri_data *d = self->data;
-  double m_local = PETSC_MAX_REAL, m;
+  peri_data *d = self->data;
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->ps.n_owned; i++)
-    if (s->ps.type[i] == PTYPE_SOLID)
-      m_local = PetscMin(m_local, s->ps.mass[i]);
-  PetscCallMPI(MPI_Allreduce(&m_local, &m, 1, MPI_DOUBLE, MPI_MIN, s->comm));
+  /* evaluated before every step: the masses once */
+  if (!d->have_m_min) {
+    double m_local = PETSC_MAX_REAL;
+    for (PetscInt i = 0; i < s->ps.n_owned; i++)
+      if (s->ps.type[i] == PTYPE_SOLID)
+        m_local = PetscMin(m_local, s->ps.mass[i]);
+    PetscCallMPI(MPI_Allreduce(&m_local, &d->m_min, 1, MPI_DOUBLE, MPI_MIN, s->comm));
+    d->have_m_min = PETSC_TRUE;
+  }
+  const double m = d->m_min;
   if (d->support > 0 && m < PETSC_MAX_REAL)
     PetscCall(
         dt_limits_add(l, "peristalsis support", "0.2 sqrt(m/k_s)", 0.2 * sqrt(m / d->support)));

@@ -20,10 +20,11 @@
 #include "dmhs/wall_wave.h"
 #include "dmhs/peristaltic_flux.h"
 
-#define PERISTALTIC_RE           0.1  /* default Reynolds number c a/nu */
-#define PERISTALTIC_WAVELENGTH_A 40.  /* default lambda/a */
-#define PERISTALTIC_RHO_DEV      0.03 /* density deviation the default c0 aims at */
-#define PERISTALTIC_MACH_C       20.  /* c0 >= this times c: Mach < 0.1 at speeds up to 5 c */
+#define PERISTALTIC_RE            0.1  /* default Reynolds number c a/nu */
+#define PERISTALTIC_WAVELENGTH_A  40.  /* default lambda/a */
+#define PERISTALTIC_RHO_DEV       0.03 /* density deviation the default c0 aims at */
+#define PERISTALTIC_MACH_C        20.  /* c0 >= this times c: Mach < 0.1 at speeds up to 5 c */
+#define PERISTALTIC_PHI_CORRECTED 0.25 /* corrected operators up to this b/a (held at 0.2) */
 
 typedef struct {
   double a, b, lambda, c; /* half-width, amplitude, wavelength [m], wave speed [m/s] */
@@ -119,14 +120,18 @@ static PetscErrorCode peristaltic_set_from_options(scene *self, sim *s) {
   /* the lubrication profile is a parabola across the channel: the quadratic no-slip
    * extrapolation is exact for it */
   sp->wall = SPH_WALL_QUADRATIC;
-  /* a wide throat keeps the second-order interior the quadratic walls want (the corrected
-   * operators, blind to a uniform pressure); a throat under 2.5 dx of half-width has no
-   * full support, and there the suction side's negative pressure let the liquid through
-   * the walls (phi = 0.8 at ny = 4, after a third of a period): the symmetric form with a
-   * background pressure of the lubrication range keeps every pressure positive */
-  const PetscBool wide_throat = c->a - c->b >= 2.5 * s->dx ? PETSC_TRUE : PETSC_FALSE;
-  sp->kernel_correction = wide_throat;
-  sp->p_background = wide_throat ? 0.0 : dp;
+  /* a shallow wave with a wide throat keeps the second-order interior the quadratic walls
+   * want (the corrected operators, blind to a uniform pressure). A deeper wave's suction
+   * side pulls harder, and there its negative pressure let the liquid through the walls:
+   * phi = 0.8 at ny = 4 (throat 0.8 dx) after a third of a period, phi = 0.5 at ny = 8
+   * (throat 4 dx, full support) after half a period; phi = 0.2 at ny = 4 held. The
+   * symmetric form with a background pressure of the lubrication range keeps every
+   * pressure positive: it ran both of those through (doc/validation.md) */
+  const PetscBool corrected = c->b <= PERISTALTIC_PHI_CORRECTED * c->a && c->a - c->b >= 2.5 * s->dx
+                                  ? PETSC_TRUE
+                                  : PETSC_FALSE;
+  sp->kernel_correction = corrected;
+  sp->p_background = corrected ? 0.0 : dp;
   /* density diffusion: without it the narrow throat of a deep wave tears the liquid */
   sp->delta = 0.02;
   PetscCall(fields_enable("to_surface")); /* kept on the moving surface by wall_wave */

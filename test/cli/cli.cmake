@@ -166,3 +166,17 @@ add_test(NAME cli_intestine_wave_speed_ok COMMAND ${DMHS_EXPECT_OUTPUT}
   -- ${DMHS_EXE} -options_file ${DMHS_INPUT}/intestine-quick.opts -t_end 1e-5
   -output_snapshots false -output_dir ${DMHS_CLI_OUT}/slow-wave)
 set_tests_properties(cli_intestine_wave_speed_ok PROPERTIES LABELS cli TIMEOUT 60)
+# the peristaltic channel's pressure form: a deep wave (phi = 0.5) gets the symmetric form with
+# the background pressure even where its throat (4 dx at ny = 8) has full support (the
+# corrected operators let liquid through the wall there), a shallow one (phi = 0.2) the
+# corrected operators
+add_test(NAME cli_peristaltic_deep_wave_form COMMAND ${DMHS_EXPECT_OUTPUT}
+  "background pressure 0\\.2372[0-9]* Pa" --reject "kernel correction"
+  -- ${DMHS_EXE} -options_file ${DMHS_INPUT}/peristaltic_channel.opts -t_end 1e-6
+  -output_snapshots false -output_dir ${DMHS_CLI_OUT}/peristaltic-deep)
+set_tests_properties(cli_peristaltic_deep_wave_form PROPERTIES LABELS cli TIMEOUT 60)
+add_test(NAME cli_peristaltic_shallow_wave_form COMMAND ${DMHS_EXPECT_OUTPUT}
+  "background pressure 0\\. Pa.*sph: kernel correction"
+  -- ${DMHS_EXE} -options_file ${DMHS_INPUT}/peristaltic_channel.opts -peristaltic_b 0.2e-3
+  -t_end 1e-6 -output_snapshots false -output_dir ${DMHS_CLI_OUT}/peristaltic-shallow)
+set_tests_properties(cli_peristaltic_shallow_wave_form PROPERTIES LABELS cli TIMEOUT 60)
