@@ -29,6 +29,7 @@
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
 #include "dmhs/sph.h"
+#include "dmhs/bond.h"
 
 typedef struct {
   PetscInt n_pockets; /* N + 1 */
@@ -45,8 +46,7 @@ typedef struct {
   PetscInt rows;  /* R */
   signed char *S; /* R x n_pockets */
   PetscInt n_seg; /* tagged solids over all ranks */
-  double m_min;   /* the smallest solid mass over all ranks, once (masses stay) */
-  PetscBool have_m_min;
+  double m_min;   /* the smallest solid mass over all ranks, at setup (masses stay) */
 } peri_data;
 
 int peristalsis_spec_value(PetscInt n_pockets, PetscInt H, PetscInt r, PetscInt k) {
@@ -252,6 +252,7 @@ static PetscErrorCode peristalsis_setup(module *self, sim *s) {
     local += s->ps.type[i] == PTYPE_SOLID && s->ps.segment[i] >= PERISTALSIS_SEGMENT0 &&
              s->ps.segment[i] < PERISTALSIS_SEGMENT0 + d->n_pockets;
   PetscCallMPI(MPI_Allreduce(&local, &d->n_seg, 1, MPIU_INT, MPI_SUM, s->comm));
+  PetscCall(bond_min_solid_mass(s, &d->m_min)); /* for the support's limit, every step */
   PetscFunctionReturn(0);
 }
 
@@ -285,19 +286,11 @@ static PetscErrorCode peristalsis_compute(module *self, sim *s) {
 }
 
 static PetscErrorCode peristalsis_max_dt(module *self, sim *s, dt_limits *l) {
-  peri_data *d = self->data;
+  const peri_data *d = self->data;
   PetscFunctionBeginUser;
-  /* evaluated before every step: the masses once */
-  if (!d->have_m_min) {
-    double m_local = PETSC_MAX_REAL;
-    for (PetscInt i = 0; i < s->ps.n_owned; i++)
-      if (s->ps.type[i] == PTYPE_SOLID)
-        m_local = PetscMin(m_local, s->ps.mass[i]);
-    PetscCallMPI(MPI_Allreduce(&m_local, &d->m_min, 1, MPI_DOUBLE, MPI_MIN, s->comm));
-    d->have_m_min = PETSC_TRUE;
-  }
+  (void)s; /* the smallest mass is taken at setup */
   const double m = d->m_min;
-  if (d->support > 0 && m < PETSC_MAX_REAL)
+  if (d->support > 0 && isfinite(m))
     PetscCall(
         dt_limits_add(l, "peristalsis support", "0.2 sqrt(m/k_s)", 0.2 * sqrt(m / d->support)));
   if (d->damping > 0)
