@@ -16,6 +16,11 @@ typedef struct cells {
   PetscInt n_alloc_cells, n_alloc_particles;
   double (*xs)[DMHS_DIM]; /* positions in cell order (scratch) */
   unsigned char *flag;    /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */
+  /* Per sorted row a, its candidates as two contiguous runs of the cell order: the own
+   * cell after a and the E cell, [a + 1, run_end1[a]), and the NW, N and NE cells,
+   * [run_first2[a], run_last2[a]). Rows are sorted by x within a cell, so the parts of
+   * the E, NW and NE cells at least a cutoff away in x are cut off the runs' ends. */
+  PetscInt *run_end1, *run_first2, *run_last2;
   PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
@@ -42,6 +47,15 @@ static inline PetscInt cells_locate(const double lo[DMHS_DIM], const double inv[
   return iy * n[0] + ix;
 }
 
+/* The order within a cell: by x, then by global id. It depends on the positions and
+ * ids only, not on which rows are owned or ghosts (bitwise rank-count invariance), and
+ * x first lets the builds cut each candidate run by x (run_end1 ... above). A cell never
+ * holds two rows with one gid: an image is a box length away. */
+static inline PetscBool cells_row_before(const particles *ps, PetscInt i, PetscInt j) {
+  const double xi = ps->x[i][0], xj = ps->x[j][0];
+  return xi < xj || (xi == xj && ps->gid[i] < ps->gid[j]) ? PETSC_TRUE : PETSC_FALSE;
+}
+
 PetscErrorCode cells_create(cells *c);
 PetscErrorCode cells_destroy(cells *c);
 /* Sort particles [0, n_owned + n_ghost) into cells covering [lo, hi] and list every pair
@@ -51,8 +65,8 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
                                  const double hi[DMHS_DIM], double cutoff);
 
 /* cells_sort.c: re-sorts the owned rows [0, n_owned) by the cell of the grid above, and by
- * global id within a cell, moving every FIELD_MIGRATE field (ghosts must be empty). The rows
- * of a cell are then contiguous and in the order cells_build_pairs lists them, so the sweeps
+ * x and then global id within a cell, moving every FIELD_MIGRATE field (ghosts must be empty). The
+ * rows of a cell are then contiguous and in the order cells_build_pairs lists them, so the sweeps
  * read memory in order. */
 PetscErrorCode cells_sort_owned_rows(particles *ps, const double lo[DMHS_DIM],
                                      const double hi[DMHS_DIM], double cutoff);

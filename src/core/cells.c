@@ -24,6 +24,7 @@ PetscErrorCode cells_destroy(cells *c) {
   PetscCall(PetscFree2(c->pair_i, c->pair_j));
   PetscCall(PetscFree(c->xs));
   PetscCall(PetscFree(c->flag));
+  PetscCall(PetscFree3(c->run_end1, c->run_first2, c->run_last2));
   PetscCall(PetscMemzero(c, sizeof(*c)));
   PetscFunctionReturn(0);
 }
@@ -58,6 +59,58 @@ static PetscErrorCode cells_grow_pairs(cells *c) {
   PetscFunctionReturn(0);
 }
 
+/* First position in [first, last) whose x is >= bound, starting the scan at `from`
+ * (the bound only grows along a cell). */
+static inline PetscInt cells_first_at_or_past(const particles *ps, const PetscInt *order,
+                                              PetscInt from, PetscInt last, double bound) {
+  PetscInt b = from;
+  while (b < last && ps->x[order[b]][0] < bound)
+    b++;
+  return b;
+}
+
+/* The candidate runs of every position (cells.h). Half the stencil (self, E, NW, N, NE)
+ * lies in two stretches of the cell order: the own cell and E are consecutive, and so are
+ * NW, N and NE. A partner is closer than the cutoff, so |dx| < cutoff: in E and NE only
+ * the rows with x < x_a + cutoff can be partners (a prefix: rows are in x order), in NW
+ * only those with x > x_a - cutoff (a suffix). The rows of a cell grow in x, so each cut
+ * moves only forward through its neighbour cell. Cut at the build's positions with the
+ * build's cutoff, the runs hold every pair of the list, and every pair a sweep finds
+ * until the next build (no particle moves half the skin before it). */
+static void cells_cut_runs(cells *c, const particles *ps) {
+  const PetscInt n0 = c->n[0], n1 = c->n[1];
+  const PetscInt *start = c->start, *order = c->order;
+  /* a margin over the cutoff far above round-off: a row cut off fails the pair test by a
+   * wide enough margin that the list is exactly the one an uncut search finds */
+  const double cut = c->size * (1.0 + 1e-9);
+  for (PetscInt cy = 0; cy < n1; cy++)
+    for (PetscInt cx = 0; cx < n0; cx++) {
+      const PetscInt cell = cy * n0 + cx, up = (cy + 1) * n0 + cx;
+      const PetscBool has_e = cx + 1 < n0, has_up = cy + 1 < n1;
+      const PetscBool has_nw = has_up && cx > 0, has_ne = has_up && cx + 1 < n0;
+      PetscInt e = has_e ? start[cell + 1] : 0, nw = has_nw ? start[up - 1] : 0;
+      PetscInt ne = has_ne ? start[up + 1] : 0;
+      for (PetscInt a = start[cell]; a < start[cell + 1]; a++) {
+        const double xa = ps->x[order[a]][0];
+        if (has_e)
+          e = cells_first_at_or_past(ps, order, e, start[cell + 2], xa + cut);
+        c->run_end1[a] = has_e ? e : start[cell + 1];
+        if (!has_up) {
+          c->run_first2[a] = c->run_last2[a] = 0;
+          continue;
+        }
+        if (has_nw) { /* the first NW row with x > xa - cut */
+          while (nw < start[up] && !(ps->x[order[nw]][0] > xa - cut))
+            nw++;
+        }
+        c->run_first2[a] = has_nw ? nw : start[up];
+        if (has_ne)
+          ne = cells_first_at_or_past(ps, order, ne, start[up + 2], xa + cut);
+        c->run_last2[a] = has_ne ? ne : start[up + 1];
+      }
+    }
+}
+
 PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
                                  const double hi[DMHS_DIM], double cutoff) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
@@ -87,31 +140,29 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
       c->order[fill[c->cell_of[i]]++] = i;
     PetscCall(PetscFree(fill));
   }
-  /* mpi: within a cell, order by global id. The pairs of a particle are then
-   * listed, and its sums accumulated, in an order that does not depend on which
-   * rows are owned or ghosts, i.e. on the rank count: with the exactly
-   * antisymmetric pair terms the run is bitwise the same on 1..N ranks. (A cell
-   * never holds two rows with one gid: an image is a box length away.) */
-  {
-    const PetscInt64 *restrict gid = ps->gid;
-    for (PetscInt k = 0; k < n_cells; k++)
-      for (PetscInt a = c->start[k] + 1; a < c->start[k + 1]; a++) {
-        const PetscInt row = c->order[a];
-        const PetscInt64 key = gid[row];
-        PetscInt b = a;
-        for (; b > c->start[k] && gid[c->order[b - 1]] > key; b--)
-          c->order[b] = c->order[b - 1];
-        c->order[b] = row;
-      }
-  }
+  /* mpi: within a cell, order by x and global id (cells_row_before). The pairs of a
+   * particle are then listed, and its sums accumulated, in an order that does not depend
+   * on which rows are owned or ghosts, i.e. on the rank count: with the exactly
+   * antisymmetric pair terms the run is bitwise the same on 1..N ranks. */
+  for (PetscInt k = 0; k < n_cells; k++)
+    for (PetscInt a = c->start[k] + 1; a < c->start[k + 1]; a++) {
+      const PetscInt row = c->order[a];
+      PetscInt b = a;
+      for (; b > c->start[k] && cells_row_before(ps, row, c->order[b - 1]); b--)
+        c->order[b] = c->order[b - 1];
+      c->order[b] = row;
+    }
 
   /* positions and flags gathered in cell order: the search below then walks
    * contiguous memory instead of jumping through order[] */
   if (n > c->n_alloc_sorted || (!c->no_pair_list && !c->xs)) {
     PetscCall(PetscFree(c->xs));
     PetscCall(PetscFree(c->flag));
+    PetscCall(PetscFree3(c->run_end1, c->run_first2, c->run_last2));
     c->n_alloc_sorted = n + n / 4;
     PetscCall(PetscMalloc1(c->n_alloc_sorted, &c->flag));
+    PetscCall(PetscMalloc3(c->n_alloc_sorted, &c->run_end1, c->n_alloc_sorted, &c->run_first2,
+                           c->n_alloc_sorted, &c->run_last2));
     if (!c->no_pair_list) /* the positions in cell order serve only the pair search */
       PetscCall(PetscMalloc1(c->n_alloc_sorted, &c->xs));
   }
@@ -127,58 +178,42 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
                  (bonded && bonded->slot[i] >= 0 ? 4 : 0);
   }
 
+  cells_cut_runs(c, ps);
+
   c->n_pairs = 0;
   c->generation++;
   if (c->no_pair_list)
     PetscFunctionReturn(0);
-  /* half stencil: each unordered pair of cells is visited once */
-  static const int stencil[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
   const double cut2 = cutoff * cutoff;
   const double(*restrict xs)[2] = (const double(*)[2])c->xs;
   const unsigned char *restrict flag = c->flag;
   const struct topology *excl = c->excl;
-  c->n_pairs = 0;
-  for (PetscInt cy = 0; cy < c->n[1]; cy++) {
-    for (PetscInt cx = 0; cx < c->n[0]; cx++) {
-      const PetscInt cell = cy * c->n[0] + cx;
-      for (PetscInt a = c->start[cell]; a < c->start[cell + 1]; a++) {
-        const double xa = xs[a][0], ya = xs[a][1];
-        const unsigned fa = flag[a];
-        for (int st = -1; st < 4; st++) {
-          PetscInt first, last;
-          if (st < 0) { /* own cell: later entries only */
-            first = a + 1;
-            last = c->start[cell + 1];
-          } else {
-            const PetscInt nx = cx + stencil[st][0], ny = cy + stencil[st][1];
-            if (nx < 0 || nx >= c->n[0] || ny >= c->n[1])
-              continue;
-            const PetscInt other = ny * c->n[0] + nx;
-            first = c->start[other];
-            last = c->start[other + 1];
-          }
-          for (PetscInt b = first; b < last; b++) {
-            const double dx = xa - xs[b][0], dy = ya - xs[b][1];
-            if (dx * dx + dy * dy >= cut2)
-              continue;
-            /* nobody owns a ghost-ghost pair; walls do not act on each other */
-            const unsigned both = fa & flag[b];
-            if (both & 3)
-              continue;
-            const PetscInt i = c->order[a], j = c->order[b];
-            /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 1 angle yes): only between two
-             * bonded particles, so liquid pairs never pay for the lookup */
-            if ((both & 4) && excl && topology_excluded(excl, ps, i, j))
-              continue;
-            if (c->n_pairs == c->n_alloc_pairs)
-              PetscCall(cells_grow_pairs(c));
-            c->pair_i[c->n_pairs] = PetscMin(i, j);
-            c->pair_j[c->n_pairs] = PetscMax(i, j);
-            c->n_pairs++;
-          }
-        }
+  for (PetscInt a = 0; a < n; a++) {
+    const double xa = xs[a][0], ya = xs[a][1];
+    const unsigned fa = flag[a];
+    /* the half stencil's two runs: each unordered pair is visited once */
+    const PetscInt first[2] = {a + 1, c->run_first2[a]},
+                   last[2] = {c->run_end1[a], c->run_last2[a]};
+    for (int run = 0; run < 2; run++)
+      for (PetscInt b = first[run]; b < last[run]; b++) {
+        const double dx = xa - xs[b][0], dy = ya - xs[b][1];
+        if (dx * dx + dy * dy >= cut2)
+          continue;
+        /* nobody owns a ghost-ghost pair; walls do not act on each other */
+        const unsigned both = fa & flag[b];
+        if (both & 3)
+          continue;
+        const PetscInt i = c->order[a], j = c->order[b];
+        /* bonded 1-2 / 1-3 partners (LAMMPS special_bonds 0 0 1 angle yes): only between two
+         * bonded particles, so liquid pairs never pay for the lookup */
+        if ((both & 4) && excl && topology_excluded(excl, ps, i, j))
+          continue;
+        if (c->n_pairs == c->n_alloc_pairs)
+          PetscCall(cells_grow_pairs(c));
+        c->pair_i[c->n_pairs] = PetscMin(i, j);
+        c->pair_j[c->n_pairs] = PetscMax(i, j);
+        c->n_pairs++;
       }
-    }
   }
   PetscFunctionReturn(0);
 }

@@ -2,11 +2,11 @@
  * sweeps visit together lie together in memory: the SPH sweep's copy into cell
  * order (sph_force_cells.c) then streams instead of jumping, and so do the
  * integration and every pair loop. The key is the cell of cells_build_pairs'
- * grid and the global id within a cell: the order depends on the positions and
- * ids only, not on where the rows were before (a restart, or the arrival order
- * of migrated particles, ends in the same rows). No row index survives a
- * build anyway: migration renumbers rows on several ranks, and everything kept
- * across steps is a FIELD_MIGRATE field or keyed by global id. */
+ * grid and, within a cell, x and then the global id (cells_row_before): the order depends on the
+ * positions and ids only, not on where the rows were before (a restart, or the arrival order of
+ * migrated particles, ends in the same rows). No row index survives a build anyway: migration
+ * renumbers rows on several ranks, and everything kept across steps is a FIELD_MIGRATE field or
+ * keyed by global id. */
 #include "dmhs/cells.h"
 #include "dmhs/fields.h"
 
@@ -31,7 +31,8 @@ PetscErrorCode cells_sort_owned_rows(particles *ps, const double lo[DMHS_DIM],
   for (PetscInt i = 0; i < n; i++) {
     cell[i] = cells_locate(lo, inv, grid, ps->x[i]);
     start[cell[i] + 1]++;
-    if (i > 0 && (cell[i] < cell[i - 1] || (cell[i] == cell[i - 1] && ps->gid[i] < ps->gid[i - 1])))
+    if (i > 0 &&
+        (cell[i] < cell[i - 1] || (cell[i] == cell[i - 1] && cells_row_before(ps, i, i - 1))))
       sorted = PETSC_FALSE;
   }
   if (!sorted) {
@@ -39,15 +40,14 @@ PetscErrorCode cells_sort_owned_rows(particles *ps, const double lo[DMHS_DIM],
       start[k + 1] += start[k];
     for (PetscInt i = 0; i < n; i++) /* counting sort: stable, rows of a cell in row order */
       rows[start[cell[i]]++] = i;
-    /* start[k] now ends cell k: within each cell, insertion sort by gid (few rows, mostly
-     * in order already) */
+    /* start[k] now ends cell k: within each cell, insertion sort by x and gid (few rows,
+     * mostly in order already) */
     PetscInt first = 0;
     for (PetscInt k = 0; k < n_cells; k++) {
       for (PetscInt a = first + 1; a < start[k]; a++) {
         const PetscInt row = rows[a];
-        const PetscInt64 key = ps->gid[row];
         PetscInt b = a;
-        for (; b > first && ps->gid[rows[b - 1]] > key; b--)
+        for (; b > first && cells_row_before(ps, row, rows[b - 1]); b--)
           rows[b] = rows[b - 1];
         rows[b] = row;
       }

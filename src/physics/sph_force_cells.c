@@ -8,7 +8,8 @@
  * (sph_cells_work), and a particle's partners are contiguous runs of that copy:
  * its own cell after it plus the next cell (E), and the three cells above it
  * (NW, N, NE) — the half stencil of cells.c, whose cells are consecutive in
- * row-major order. Eight candidates at a time are tested (r < h) and computed
+ * row-major order — each cut at the build to the rows within the cutoff in x
+ * (cells.h, run_end1 ...). Eight candidates at a time are tested (r < h) and computed
  * with unit-stride loads; the partners' sums are updated in place with masked
  * stores. The particle's own sums are added in the order of its partners (the
  * lanes in use are compressed into a buffer and added one by one), which keeps
@@ -227,32 +228,24 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
 
 SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int artificial,
                                   int diffusion, int same_v, const cells_args *A, const cells *c) {
-  const PetscInt n0 = c->n[0], n1 = c->n[1];
-  const PetscInt *restrict start = c->start;
+  const PetscInt *restrict end1 = c->run_end1, *restrict first2 = c->run_first2,
+                           *restrict last2 = c->run_last2;
+  const PetscInt n = c->start[c->n[0] * c->n[1]];
   own_sums o;
   o.pairs = 0;
-  for (PetscInt cy = 0; cy < n1; cy++)
-    for (PetscInt cx = 0; cx < n0; cx++) {
-      const PetscInt cell = cy * n0 + cx;
-      /* own cell after a, then E: consecutive; NW, N, NE: consecutive */
-      const PetscInt end1 = cx + 1 < n0 ? start[cell + 2] : start[cell + 1];
-      const PetscInt up = (cy + 1) * n0;
-      const PetscInt first2 = cy + 1 < n1 ? start[up + PetscMax(cx - 1, 0)] : 0;
-      const PetscInt last2 = cy + 1 < n1 ? start[up + PetscMin(cx + 1, n0 - 1) + 1] : 0;
-      for (PetscInt a = start[cell]; a < start[cell + 1]; a++) {
-        o.n = 0;
-        o.ax = A->AX[a];
-        o.ay = A->AY[a];
-        o.ad = continuity ? A->DR[a] : 0.0;
-        cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, a + 1, end1, &o);
-        cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, first2, last2, &o);
-        own_flush(&o, continuity, diffusion);
-        A->AX[a] = o.ax;
-        A->AY[a] = o.ay;
-        if (continuity)
-          A->DR[a] = o.ad;
-      }
-    }
+  for (PetscInt a = 0; a < n; a++) {
+    o.n = 0;
+    o.ax = A->AX[a];
+    o.ay = A->AY[a];
+    o.ad = continuity ? A->DR[a] : 0.0;
+    cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, a + 1, end1[a], &o);
+    cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, first2[a], last2[a], &o);
+    own_flush(&o, continuity, diffusion);
+    A->AX[a] = o.ax;
+    A->AY[a] = o.ay;
+    if (continuity)
+      A->DR[a] = o.ad;
+  }
   return o.pairs;
 }
 

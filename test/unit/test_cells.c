@@ -118,6 +118,27 @@ static void run_case(const cells_case *cc, uint64_t seed) {
     total += m;
   }
   assert_true(total > cc->n); /* the case is not vacuous */
+  /* the runs cut by x lie inside the half stencil's cells and are shorter than them where
+   * the cells hold more than a cutoff's width of rows (the complete list above proves
+   * that no partner was cut) */
+  PetscInt64 cut_len = 0, full_len = 0;
+  const PetscInt n0 = cel.n[0], n1 = cel.n[1];
+  for (PetscInt cy = 0; cy < n1; cy++)
+    for (PetscInt cx = 0; cx < n0; cx++) {
+      const PetscInt cell = cy * n0 + cx, up = (cy + 1) * n0 + cx;
+      const PetscInt end1 = cx + 1 < n0 ? cel.start[cell + 2] : cel.start[cell + 1];
+      const PetscInt f2 = cy + 1 < n1 ? cel.start[up + PetscMax(cx - 1, 0) - cx] : 0;
+      const PetscInt l2 = cy + 1 < n1 ? cel.start[up + PetscMin(cx + 1, n0 - 1) - cx + 1] : 0;
+      for (PetscInt a = cel.start[cell]; a < cel.start[cell + 1]; a++) {
+        assert_true(cel.run_end1[a] >= cel.start[cell + 1] && cel.run_end1[a] <= end1);
+        assert_true(cel.run_first2[a] >= f2 && cel.run_last2[a] <= l2);
+        assert_true(cel.run_first2[a] <= cel.run_last2[a]);
+        cut_len += (cel.run_end1[a] - a - 1) + (cel.run_last2[a] - cel.run_first2[a]);
+        full_len += (end1 - a - 1) + (l2 - f2);
+      }
+    }
+  if (cc->n >= 400)
+    assert_true(cut_len < full_len);
   OK(PetscFree(ref));
   OK(PetscFree(nb));
   OK(PetscFree2(count, fill));
@@ -202,7 +223,9 @@ static void test_sort_owned_rows(void **state) {
     if (i > 0) {
       const PetscInt c0 = cells_locate(lo, inv, grid, ps.x[i - 1]),
                      c1 = cells_locate(lo, inv, grid, ps.x[i]);
-      assert_true(c0 < c1 || (c0 == c1 && ps.gid[i - 1] < ps.gid[i]));
+      assert_true(c0 < c1 ||
+                  (c0 == c1 && (ps.x[i - 1][0] < ps.x[i][0] ||
+                                (ps.x[i - 1][0] == ps.x[i][0] && ps.gid[i - 1] < ps.gid[i]))));
     }
   }
   double x_first = ps.x[0][0];
