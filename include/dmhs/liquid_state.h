@@ -10,4 +10,10 @@
  * (0 when there are none). Collective. */
 PetscErrorCode liquid_state_bounds(sim *s, double *rho_dev, double *mach);
 
+/* Where the density bound breaks, to tell a few squeezed particles from the bulk: how many
+ * fluid particles lie beyond `limit` in |rho/rho0 - 1|, and the position of the one
+ * farthest from rho0 (the lowest gid among equals, so any rank count names the same one;
+ * (0, 0) when there is no fluid). Collective. */
+PetscErrorCode liquid_state_worst(sim *s, double limit, PetscInt64 *n_over, double worst_x[2]);
+
 #endif

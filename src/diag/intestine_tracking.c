@@ -78,6 +78,8 @@ static PetscErrorCode intestine_open_csv(intestine_tracking *c, sim *s, double t
     INTESTINE_HEADER(",lift_%" PetscInt_FMT, k);
   for (PetscInt k = 0; k < np; k++)
     INTESTINE_HEADER(",s_%" PetscInt_FMT, k);
+  /* where the density bound breaks: the liquid beyond 3 %, the worst particle's place */
+  INTESTINE_HEADER(",rho_over_3pct,rho_worst_x,rho_worst_y");
   INTESTINE_HEADER("\n");
 #undef INTESTINE_HEADER
   PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB,
@@ -103,6 +105,9 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
   double rho_dev, mach;
   PetscInt64 inside, through;
   PetscCall(liquid_state_bounds(s, &rho_dev, &mach));
+  PetscInt64 n_over;
+  double worst[2];
+  PetscCall(liquid_state_worst(s, 0.03, &n_over, worst));
   PetscCall(membrane_leak_count(s, &c->lay.mem, &inside, &through));
   c->rho_dev_max = PetscMax(c->rho_dev_max, rho_dev);
   c->mach_max = PetscMax(c->mach_max, mach);
@@ -141,7 +146,7 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
   if (s->rank == 0) { /* mpi: rank 0 writes */
     if (!c->csv)
       PetscCall(intestine_open_csv(c, s, tw, Tw));
-    const size_t len = 64 + 32 * (size_t)(4 * np + 8);
+    const size_t len = 128 + 32 * (size_t)(4 * np + 8);
     size_t at = 0;
     char *row;
     PetscCall(PetscMalloc1(len, &row));
@@ -160,7 +165,7 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
       INTESTINE_ROW(",%.8g", lift[k]);
     for (PetscInt k = 0; k < np; k++)
       INTESTINE_ROW(",%d", peristalsis_value(c->lay.peri, s->t, k));
-    INTESTINE_ROW("\n");
+    INTESTINE_ROW(",%" PetscInt64_FMT ",%.6g,%.6g\n", n_over, worst[0], worst[1]);
 #undef INTESTINE_ROW
     PetscCheck(at < len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "intestine.csv row longer than %zu bytes",
                len);

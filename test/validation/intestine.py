@@ -106,6 +106,18 @@ def mode_run(args):
     ins, thr = col(names, data, "in_membrane"), col(names, data, "through")
     print(f"  max |rho/rho0 - 1| {rd.max():.4g} (t = {t[rd.argmax()]:.4g} s), max Mach {ma.max():.4g} "
           f"(t = {t[ma.argmax()]:.4g} s), liquid in the membrane: max {int(ins.max())}, through it: max {int(thr.max())}")
+    # where the bound breaks: the count beyond 3 % agrees with the maximum, row by row, and
+    # the worst particle's place is a finite position (not the (0, 0) of an empty liquid)
+    for n in ("rho_over_3pct", "rho_worst_x", "rho_worst_y"):
+        if n not in names:
+            fail(f"intestine.csv has no column {n}")
+    over3, wx, wy = col(names, data, "rho_over_3pct"), col(names, data, "rho_worst_x"), col(names, data, "rho_worst_y")
+    if np.any((over3 > 0) != (rd > 0.03)):
+        k = int(np.argmax((over3 > 0) != (rd > 0.03)))
+        fail(f"rho_over_3pct {int(over3[k])} disagrees with rho_dev {rd[k]:.4g} at t = {t[k]:.4g} s")
+    if not (np.all(np.isfinite(wx)) and np.all(np.isfinite(wy))) or np.any((wx == 0) & (wy == 0)):
+        fail("rho_worst_x / rho_worst_y not a particle's position in every row")
+    print(f"  worst density at the end at ({wx[-1]:.4g}, {wy[-1]:.4g}) m; rows with liquid beyond 3 %: {int(np.sum(over3 > 0))}")
     if rd.max() > args.max_rho_dev:
         fail(f"density deviation {rd.max():.4g} > {args.max_rho_dev} at t = {t[rd.argmax()]:.4g} s")
     if ma.max() > args.max_mach:
