@@ -6,7 +6,7 @@
 typedef struct dmhs_events {
   PetscLogStage stage_setup, stage_steps;
   PetscLogEvent integrate, migrate, halo_build, halo_forward, pairs;
-  PetscLogEvent sph_density, sph_eos, sph_wall, sph_correction, sph_force, body_force;
+  PetscLogEvent sph_density, sph_eos, sph_wall, sph_correction, sph_force, sph_tensile, body_force;
   PetscLogEvent diagnostics, output, check_state;
   PetscLogEvent partition, halo_exchange; /* mpi: METIS; the MPI part of halo build/forward */
   PetscLogEvent checkpoint;

@@ -34,6 +34,7 @@ typedef struct sph_params {
   double av_beta;
   double p_background; /* p_b [Pa] added to every EOS: p = EOS(rho) + p_b (0 = off) */
   double delta;        /* density diffusion coefficient (Molteni & Colagrossi 2009; 0 = off) */
+  double tensile_eps; /* Monaghan (2000) artificial pressure where p < 0 (sph_tensile.c; 0 = off) */
   PetscBool kernel_correction; /* corrected operators (sph_correction_iact.h) */
   sph_wall_kind wall;          /* wall velocity extrapolation (sph_wall.c) */
   sph_sweep_kind sweep;        /* -sph_force_sweep */

@@ -22,6 +22,7 @@ PetscErrorCode events_register(void) {
   PetscCall(PetscLogEventRegister("SphWall", id, &events.sph_wall));
   PetscCall(PetscLogEventRegister("SphCorrection", id, &events.sph_correction));
   PetscCall(PetscLogEventRegister("SphForce", id, &events.sph_force));
+  PetscCall(PetscLogEventRegister("SphTensile", id, &events.sph_tensile));
   PetscCall(PetscLogEventRegister("BodyForce", id, &events.body_force));
   PetscCall(PetscLogEventRegister("Diagnostics", id, &events.diagnostics));
   PetscCall(PetscLogEventRegister("Output", id, &events.output));

@@ -26,6 +26,7 @@ typedef struct {
   sph_wall_work *wall;
   sph_force_work force;
   sph_correction_work correction;
+  sph_tensile_work tensile;
   PetscBool has_walls; /* any wall particle on any rank: else the wall pass is skipped */
 } sph_data;
 
@@ -94,6 +95,12 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
       "Colagrossi 2009; 0 = off, 0.1 usual)",
       NULL, sp->delta, &sp->delta, NULL));
+  PetscCall(PetscOptionsReal(
+      "-sph_tensile_eps",
+      "Artificial pressure against the tensile instability [1] (Monaghan 2000): where p < 0 a "
+      "pair repulsion eps |p|/rho^2 (W(r)/W(dx))^4 keeps particles under tension from pairing "
+      "up (0 = off, 0.2 usual)",
+      NULL, sp->tensile_eps, &sp->tensile_eps, NULL));
   PetscCall(PetscOptionsBool(
       "-sph_kernel_correction",
       "Corrected operators [1]: pressure gradient sum_j V_j (p_j - p_i) L_i grad W (exact for "
@@ -125,6 +132,11 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscOptionsEnd();
   PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
+  PetscCheck(sp->tensile_eps >= 0 && sp->tensile_eps <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_tensile_eps must lie in [0, 1] (got %.3g)", sp->tensile_eps);
+  PetscCheck(sp->tensile_eps == 0 || s->dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
+             "-sph_tensile_eps %.3g needs the scene's particle spacing, which scene %s does not set",
+             sp->tensile_eps, s->scn->name);
   PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(!sp->density_predict || sp->density == SPH_DENSITY_CONTINUITY, s->comm,
@@ -173,9 +185,9 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
              s->scn->name);
   PetscCall(sph_wall_create(&d->wall));
   /* the vectorised sweep walks the cells; walls, summation density, the correction and the
-   * stress diagnostics read the pair list */
-  if (sph_force_cells_applies(sp) && !d->has_walls && sp->density == SPH_DENSITY_CONTINUITY &&
-      !fields_enabled("stress_xx"))
+   * stress diagnostics and the artificial pressure read the pair list */
+  if (sph_force_cells_applies(sp) && !d->has_walls && sp->tensile_eps == 0 &&
+      sp->density == SPH_DENSITY_CONTINUITY && !fields_enabled("stress_xx"))
     self->needs |= MODULE_CELLS_ONLY;
   PetscFunctionReturn(0);
 }
@@ -205,6 +217,8 @@ static PetscErrorCode sph_compute(module *self, sim *s) {
                                 (const double(*)[2])d->correction.pair));
   else
     PetscCall(sph_force_compute(s, sp, &d->force, NULL, NULL));
+  if (sp->tensile_eps > 0)
+    PetscCall(sph_tensile_compute(s, sp, &d->tensile));
   PetscFunctionReturn(0);
 }
 
@@ -289,6 +303,10 @@ static PetscErrorCode sph_view(module *self, sim *s, PetscViewer v) {
   if (sp->delta > 0)
     PetscCall(
         PetscViewerASCIIPrintf(v, "sph: density diffusion delta = %g (delta-SPH)\n", sp->delta));
+  if (sp->tensile_eps > 0)
+    PetscCall(PetscViewerASCIIPrintf(
+        v, "sph: artificial pressure eps = %g where p < 0 (Monaghan 2000, (W(r)/W(dx))^4)\n",
+        sp->tensile_eps));
   if (sp->density_predict)
     PetscCall(PetscViewerASCIIPrintf(v, "sph: forces see the density predicted for the end of "
                                         "the step (-sph_density_predict)\n"));
@@ -317,6 +335,7 @@ static PetscErrorCode sph_destroy(module *self) {
     PetscCall(sph_cells_work_destroy(d->force.cells));
   PetscCall(PetscFree(d->force.cells));
   PetscCall(sph_correction_destroy(&d->correction));
+  PetscCall(sph_tensile_destroy(&d->tensile));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }

@@ -81,6 +81,14 @@ PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, const double (*vv
                                  double (*W)[3]);
 /* sph_density.c: summation density rho_i = sum_j m_j W_ij (self included), owned non-walls */
 PetscErrorCode sph_density_summation(sim *s, const sph_params *sp);
+/* sph_tensile.c: Monaghan's artificial pressure (-sph_tensile_eps), added to the
+ * accelerations after the momentum sweep; R holds eps |p|/rho^2 per row under tension */
+typedef struct {
+  PetscInt n_alloc;
+  double *R;
+} sph_tensile_work;
+PetscErrorCode sph_tensile_compute(sim *s, const sph_params *sp, sph_tensile_work *w);
+PetscErrorCode sph_tensile_destroy(sph_tensile_work *w);
 /* sph_eos.c: p from rho for every non-wall row (owned and ghost: no communication) */
 PetscErrorCode sph_eos_compute(sim *s, const sph_params *sp);
 /* sph_wall.c: wall velocity/pressure/density extrapolated from the liquid (Adami 2012) */

@@ -14,13 +14,18 @@
  *   - with -sph_kernel_correction (sph_correction.c + the corrected sweeps), each
  *     owned particle's acceleration and d rho/dt equal a brute-force evaluation
  *     of the corrected operators (sph_correction_iact.h) over all other particles,
- *     with and without artificial viscosity, for every kernel. */
+ *     with and without artificial viscosity, for every kernel;
+ *   - Monaghan's artificial pressure (sph_tensile_iact.h, sph_tensile.c): its pair term is
+ *     antisymmetric bit for bit and repulsive, zero without tension, eps |P| grad r_ij at
+ *     r = dx; the pass equals a brute-force sum, conserves momentum and leaves a liquid at
+ *     positive pressure untouched. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
 #include "physics/sph_force.h"
 #include "physics/sph_force_iact.h"
 #include "physics/sph_eos.h"
 #include "physics/sph_correction_iact.h"
+#include "physics/sph_tensile_iact.h"
 
 static const double h = 0.1, rho0 = 1000.0, c0 = 10.0, nu = 1e-3;
 /* the liquid's parameters (the sph module's, passed to its passes as it does) */
@@ -486,6 +491,105 @@ static void test_cells_sweep_bitwise(void **state) {
   OK(PetscFree(work.cells));
 }
 
+/* ---- Monaghan's artificial pressure ---- */
+
+static void test_tensile_pair(void **state) {
+  (void)state;
+  unit_rng g = {5};
+  const double eps = 0.2, dx = 0.4 * h;
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  for (int trial = 0; trial < 600; trial++) {
+    const sph_kernel_kind k = kernels[trial % 3];
+    const pair_state P = random_pair(&g, k);
+    const double norm = sph_kernel_norm(k, 2, h), grad = P.dwdr / P.r;
+    double w = 0, dw = 0, w_dx = 0, dw_dx = 0;
+    sph_kernel_eval(k, 2, norm, 1.0 / h, P.r, &w, &dw);
+    sph_kernel_eval(k, 2, norm, 1.0 / h, dx, &w_dx, &dw_dx);
+    /* half the pairs with one particle under tension */
+    const double Pi = trial % 2 ? -fabs(P.p_i) - 1.0 : fabs(P.p_i), Pj = fabs(P.p_j);
+    const double R_sum =
+        sph_tensile_R(eps, Pi / (P.rho_i * P.rho_i)) + sph_tensile_R(eps, Pj / (P.rho_j * P.rho_j));
+    const double rji[2] = {-P.rij[0], -P.rij[1]};
+    double Tij[2], Tji[2];
+    sph_tensile_iact(P.rij, grad, w, 1.0 / w_dx, R_sum, Tij);
+    sph_tensile_iact(rji, grad, w, 1.0 / w_dx, R_sum, Tji);
+    assert_true(Tji[0] == -Tij[0] && Tji[1] == -Tij[1]);
+    if (trial % 2) /* tension: pushed apart */
+      assert_true(Tij[0] * P.rij[0] + Tij[1] * P.rij[1] > 0.0);
+    else
+      assert_true(Tij[0] == 0.0 && Tij[1] == 0.0);
+  }
+  /* at r = dx, f = 1: the term is R grad r_ij with the sign of a repulsion */
+  const double norm = sph_kernel_norm(SPH_KERNEL_LUCY, 2, h), rij[2] = {0.6 * dx, 0.8 * dx};
+  double w = 0, dw = 0, T[2];
+  sph_kernel_eval(SPH_KERNEL_LUCY, 2, norm, 1.0 / h, dx, &w, &dw);
+  const double R = sph_tensile_R(eps, -3.0);
+  assert_close(R, 0.6, 1e-15);
+  sph_tensile_iact(rij, dw / dx, w, 1.0 / w, R, T);
+  assert_close(T[0], -R * (dw / dx) * rij[0], 1e-14 * fabs(T[0]));
+  assert_close(T[1], -R * (dw / dx) * rij[1], 1e-14 * fabs(T[1]));
+}
+
+/* The pass on a random cloud: a brute-force minimum-image sum per particle, momentum
+ * conserved; with every density at or above rho0 (no tension) nothing changes. */
+static void test_tensile_pass(void **state) {
+  (void)state;
+  unit_rng g = {99};
+  static sim s;
+  static sph_tensile_work work;
+  const double eps = 0.2, dx = 0.4 * h;
+  const sph_kernel_kind kernels[] = {SPH_KERNEL_LUCY, SPH_KERNEL_CUBIC, SPH_KERNEL_WENDLAND};
+  for (int k = 0; k < 3; k++) {
+    build_cloud(&s, 150, kernels[k], 0.0, SPH_DENSITY_CONTINUITY, &g);
+    s.dx = dx;
+    sph_p.tensile_eps = eps;
+    OK(sph_tensile_compute(&s, &sph_p, &work));
+    const double norm = sph_kernel_norm(kernels[k], 2, h);
+    double w_dx = 0, dw_dx = 0, P[2] = {0, 0}, scale = 0, amax = 0;
+    sph_kernel_eval(kernels[k], 2, norm, 1.0 / h, dx, &w_dx, &dw_dx);
+    for (PetscInt i = 0; i < s.ps.n_owned; i++)
+      for (int d = 0; d < 2; d++) {
+        P[d] += s.ps.mass[i] * s.ps.a[i][d];
+        scale += fabs(s.ps.mass[i] * s.ps.a[i][d]);
+        amax = fmax(amax, fabs(s.ps.a[i][d]));
+      }
+    assert_true(scale > 0);
+    assert_true(fabs(P[0]) <= 1e-12 * scale && fabs(P[1]) <= 1e-12 * scale);
+    for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+      double a[2] = {0, 0};
+      for (PetscInt j = 0; j < s.ps.n_owned; j++) {
+        if (j == i)
+          continue;
+        double rij[2] = {s.ps.x[i][0] - s.ps.x[j][0], s.ps.x[i][1] - s.ps.x[j][1]};
+        domain_min_image(&s.dom, rij);
+        const double r = hypot(rij[0], rij[1]);
+        if (r >= h)
+          continue;
+        double w = 0, dw = 0;
+        sph_kernel_eval(kernels[k], 2, norm, 1.0 / h, r, &w, &dw);
+        /* Monaghan (2000) written out here, independently of sph_tensile_iact */
+        const double Ri = s.ps.p[i] < 0 ? -eps * s.ps.p[i] / (s.ps.rho[i] * s.ps.rho[i]) : 0;
+        const double Rj = s.ps.p[j] < 0 ? -eps * s.ps.p[j] / (s.ps.rho[j] * s.ps.rho[j]) : 0;
+        const double f = pow(w / w_dx, 4.0);
+        for (int d = 0; d < 2; d++)
+          a[d] -= s.ps.mass[j] * (Ri + Rj) * f * (dw / r) * rij[d];
+      }
+      assert_close(s.ps.a[i][0], a[0], 1e-12 * amax);
+      assert_close(s.ps.a[i][1], a[1], 1e-12 * amax);
+    }
+    /* no tension anywhere: the pass adds nothing */
+    for (PetscInt i = 0; i < s.ps.n_owned + s.ps.n_ghost; i++)
+      s.ps.p[i] = fabs(s.ps.p[i]);
+    OK(PetscArrayzero(s.ps.a, s.ps.n_owned + s.ps.n_ghost));
+    OK(sph_tensile_compute(&s, &sph_p, &work));
+    for (PetscInt i = 0; i < s.ps.n_owned; i++)
+      assert_true(s.ps.a[i][0] == 0.0 && s.ps.a[i][1] == 0.0);
+    sph_p.tensile_eps = 0.0;
+    destroy_cloud(&s);
+  }
+  OK(sph_tensile_destroy(&work));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_pair_antisymmetry),
@@ -496,6 +600,8 @@ int main(void) {
       cmocka_unit_test(test_coincident_pair),
       cmocka_unit_test(test_corrected_sweep),
       cmocka_unit_test(test_cells_sweep_bitwise),
+      cmocka_unit_test(test_tensile_pair),
+      cmocka_unit_test(test_tensile_pass),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }

@@ -86,10 +86,12 @@ def mode_run(args):
         fail(f"dmhs exited with {rc}")
     names, data = load(args.outdir)
     t = col(names, data, "t")
-    tend = [l for l in open(args.opts) if l.startswith("-t_end")]
+    tend = [l.split()[1] for l in open(args.opts) if l.startswith("-t_end")]
+    extra = args.extra.split()
+    tend += [extra[k + 1] for k in range(len(extra) - 1) if extra[k] == "-t_end"]  # the last one wins
     if not tend:
         fail(f"{args.opts} has no -t_end line to check the run's end against")
-    if t[-1] < float(tend[0].split()[1]) * (1 - 1e-6) - 1e-4:
+    if t[-1] < float(tend[-1]) * (1 - 1e-6) - 1e-4:
         fail(f"run stopped at t = {t[-1]}")
     fluid, over = col(names, data, "fluid"), col(names, data, "overflow")
     n0 = fluid[0] + over[0]
