@@ -51,8 +51,8 @@ set_tests_properties(validation_intestine_plot PROPERTIES LABELS validation TIME
 # full): the study's wave speed and lift over one whole wave; alpha after one
 # period, u_P and u_S measured; conservation, the schedule's signs, the bounds
 # as in the quick run; at most 1 % of the liquid (13 particles) lodged in the
-# membrane, none through it. Measured: density 0.71 %, Mach 0.033, 1 lodged,
-# none through; alpha 0.245, u_F 0.149 cm/s against u_P 0.157 cm/s.
+# membrane, none through it. Measured: density 0.62 %, Mach 0.034, at most 1
+# lodged, none through; alpha 0.234, u_F 0.174 cm/s against u_P 0.148 cm/s.
 add_test(NAME validation_intestine_pet_quick
          COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/intestine.py --exe ${DMHS_EXE}
                  --opts ${PROJECT_SOURCE_DIR}/input/intestine-pet-quick.opts --outdir ${DMHS_INTESTINE_OUT}/pet-quick
