@@ -134,9 +134,10 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
              "-sph_delta must lie in [0, 1] (got %g)", sp->delta);
   PetscCheck(sp->tensile_eps >= 0 && sp->tensile_eps <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_tensile_eps must lie in [0, 1] (got %.3g)", sp->tensile_eps);
-  PetscCheck(sp->tensile_eps == 0 || s->dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
-             "-sph_tensile_eps %.3g needs the scene's particle spacing, which scene %s does not set",
-             sp->tensile_eps, s->scn->name);
+  PetscCheck(
+      sp->tensile_eps == 0 || s->dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
+      "-sph_tensile_eps %.3g needs the scene's particle spacing, which scene %s does not set",
+      sp->tensile_eps, s->scn->name);
   PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(!sp->density_predict || sp->density == SPH_DENSITY_CONTINUITY, s->comm,
