@@ -138,6 +138,11 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       sp->tensile_eps == 0 || s->dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
       "-sph_tensile_eps %.3g needs the scene's particle spacing, which scene %s does not set",
       sp->tensile_eps, s->scn->name);
+  /* its reference W(dx) must be inside the support */
+  PetscCheck(sp->tensile_eps == 0 || s->dx < sp->h, s->comm, PETSC_ERR_ARG_INCOMP,
+             "-sph_tensile_eps %.3g: the particle spacing dx = %.3g m is not inside the support "
+             "-sph_h %.3g m",
+             sp->tensile_eps, s->dx, sp->h);
   PetscCheck(sp->delta == 0 || sp->density == SPH_DENSITY_CONTINUITY, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_delta %g: density diffusion needs -sph_density continuity", sp->delta);
   PetscCheck(!sp->density_predict || sp->density == SPH_DENSITY_CONTINUITY, s->comm,

@@ -23,11 +23,8 @@ PetscErrorCode sph_tensile_compute(sim *s, const sph_params *sp, sph_tensile_wor
     w->R[i] = sph_tensile_R(sp->tensile_eps, ps->p[i] / (ps->rho[i] * ps->rho[i]));
   const sph_kernel_kind kernel = sp->kernel;
   const double h = sp->h, h2 = h * h, inv_h = 1.0 / h, norm = sph_kernel_norm(kernel, 2, h);
-  double w_dx = 0.0, dwdr_dx = 0.0;
+  double w_dx = 0.0, dwdr_dx = 0.0; /* W(dx) > 0: dx < h, checked with the options */
   sph_kernel_eval(kernel, 2, norm, inv_h, s->dx, &w_dx, &dwdr_dx);
-  PetscCheck(w_dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
-             "-sph_tensile_eps: the particle spacing dx = %g m is not inside the support h = %g m",
-             s->dx, h);
   const double inv_w_dx = 1.0 / w_dx;
   const PetscInt *restrict pi = s->cel.pair_i, *restrict pj = s->cel.pair_j;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
