@@ -6,8 +6,8 @@
 # 37 is (0.0081 m, 5e-4 m^2/s, 5.8 cm/s) with --dry-run as well as
 # DMHS_DRY_RUN=1; ids 100, -1 and "x" and a missing id fail; a completed run
 # is skipped and one with a checkpoint continues from it (-restart); the
-# fast waves (V_w = 13 and 26 cm/s) get -sph_c0 100 U_m/3 and no artificial
-# viscosity, the slow ones no -sph_c0.
+# fast waves (V_w = 13 and 26 cm/s) get -sph_c0 100 U_m/3 and
+# -sph_av_alpha 0.1, the slow ones neither.
 # Usage: colon_study.sh REPO WORKDIR
 set -euo pipefail
 repo=$1 W=$2
@@ -52,9 +52,9 @@ expect 99 -sph_nu 5e-4
 expect 99 -output_dir output/colon-study/L0.0157_nu5e-4_Vw26
 close 99 -peristalsis_tw 0.0334448 1e-5   # 0.2 m / (23 x 0.26 m/s)
 close 99 -t_end 7.74509 1e-5
-# the fast waves' calibration: c0 = 100 U_m/3, U_m = 1.5 (F/k_s)/(ramp t_w), no alpha
+# the fast waves' calibration: c0 = 100 U_m/3, U_m = 1.5 (F/k_s)/(ramp t_w), and alpha 0.1
 close 99 -sph_c0 14.95 5e-3             # U_m = 1.5 x 0.01 m / 0.0334 s = 0.449 m/s (3 digits)
-[ -z "$(value "$W/99.log" -sph_av_alpha)" ] || fail "task 99: an artificial viscosity the calibration no longer has"
+expect 99 -sph_av_alpha 0.1
 dry 3                                   # V_w = 13 cm/s: U_m = 0.224 m/s
 close 3 -sph_c0 7.48 5e-3 
 [ -z "$(value "$W/0.log" -sph_c0)$(value "$W/0.log" -sph_av_alpha)" ] ||
