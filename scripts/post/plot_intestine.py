@@ -115,6 +115,10 @@ def main():
                label=f"least squares, first wave: u_F = {s['u_F'] * 100:.3g} cm/s")
     if math.isfinite(s.get("u_F_initial", float("nan"))):
         sq = np.where(d["s_0"] > 0)[0]
+        # the first contiguous squeeze only, the rows the solver's slope was fitted to
+        # (pocket 0 squeezes again in every later wave)
+        gaps = np.where(np.diff(sq) > 1)[0]
+        sq = sq[:gaps[0] + 1] if len(gaps) else sq
         if len(sq) > 1:
             ts, xs = t[sq[0]:sq[-1] + 1], d["x_F"][sq[0]:sq[-1] + 1]
             x.plot(ts, (xs.mean() + s["u_F_initial"] * (ts - ts.mean())) * 100, "b:", lw=2,

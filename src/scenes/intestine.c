@@ -9,7 +9,8 @@
  *       y_s(x) = -A sin^2(pi x / b)   (A = -intestine_amplitude),
  *     columns spaced r0 = dx along the middle layer's arc, the other layers
  *     offset by r0 along its normal; the first and last -intestine_clamp
- *     columns are fixed (wall particles): the membrane cannot drift;
+ *     columns (default: those within b/25 of each end) are fixed (wall
+ *     particles): the membrane cannot drift;
  *   liquid: the lattice (i + 1/2) dx above the membrane up to the level y = L
  *     (-intestine_level, above the folds y = 0, where pockets meet);
  *   a wall closes the left end (x < 0), up to L + -intestine_wall_height;
@@ -66,8 +67,18 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
                              c->amplitude, &c->amplitude, NULL));
   PetscCall(PetscOptionsInt("-intestine_membrane_layers", "Membrane particle layers [1]", NULL,
                             c->layers, &c->layers, NULL));
-  PetscCall(PetscOptionsInt("-intestine_clamp", "Fixed membrane columns at each end [1]", NULL,
-                            c->clamp, &c->clamp, NULL));
+  /* the columns within b/25 of each end (3 at dx = 2.5e-4 m, 1 at 5e-4 m): the wave's bump
+   * F sin^2(pi x/b) at the first free column, ~ F (pi x/b)^2, is what the membrane's step from
+   * the fixed column to the free one has to take; a clamp of 1.5 mm at dx = 5e-4 m (0.07 F
+   * there) let the lowered membrane open a gap at its edge, and liquid went through it
+   * (doc/validation.md, "Seven waves") */
+  /* (guarded: b and dx are checked below, after the options are read; capped so the cast is
+   * defined for any dx) */
+  const double within = c->b > 0 && c->dx > 0 ? floor(c->b / (25.0 * c->dx) + 1e-9) : 1.0;
+  c->clamp = PetscMax(1, (PetscInt)PetscMin(within, 1e6));
+  PetscCall(PetscOptionsInt("-intestine_clamp",
+                            "Fixed membrane columns at each end [1] (default: those within b/25)",
+                            NULL, c->clamp, &c->clamp, NULL));
   PetscCall(PetscOptionsReal("-intestine_wall_height", "Left wall's height above the level [m]",
                              NULL, c->wall_height, &c->wall_height, NULL));
   c->weir = c->level;
@@ -344,7 +355,6 @@ PetscErrorCode intestine_scene_create(scene **out) {
   c->level = 0.0046;
   c->amplitude = 0.003;
   c->layers = 3;
-  c->clamp = 3;
   c->wall_height = 0.03;
   c->red_pocket = 4;
   (*out)->name = "intestine";
