@@ -1,9 +1,12 @@
-"""Shared by the colon's plot scripts (plot_intestine.py, plot_intestine_study.py):
-the strict reader of a run's intestine-summary.csv."""
+"""Shared by the colon's plot scripts (plot_intestine.py, plot_intestine_study.py,
+plot_intestine_waves.py): the strict readers of a run's intestine.csv and
+intestine-summary.csv, and the rows that end each completed wave."""
 import csv
 import math
 import os
 import sys
+
+import numpy as np
 
 
 def die(prog, msg):
@@ -42,3 +45,50 @@ def read_summary(path, prog, need=(), finite=()):
     if undefined:
         die(prog, f"{path}: {', '.join(undefined)} n/a")
     return out
+
+
+def read_series(path, prog):
+    """intestine.csv as ({column: array}, [column names]). Exits naming the file and the row when
+    the file is missing, has fewer than two rows, a row of the wrong length or a non-finite value."""
+    if not os.path.isfile(path):
+        die(prog, f"{path}: no such file")
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#") and l.strip()]
+    if len(lines) < 3:
+        die(prog, f"{path}: fewer than two rows")
+    names = lines[0].strip().split(",")
+    rows = []
+    for n, l in enumerate(lines[1:], start=2):
+        v = l.strip().split(",")
+        if len(v) != len(names):
+            die(prog, f"{path}: row {n} has {len(v)} values, the header {len(names)}")
+        try:
+            r = [float(x) for x in v]
+        except ValueError:
+            die(prog, f"{path}: row {n} has a value that is not a number")
+        if not all(math.isfinite(x) for x in r):
+            die(prog, f"{path}: row {n} has a non-finite value")
+        rows.append(r)
+    data = np.array(rows)
+    return {n: data[:, i] for i, n in enumerate(names)}, names
+
+
+def pocket_counts(d, names, prefix, n_pockets):
+    """The set's count per pocket (and "out", the last column) in every row, or None when the run
+    did not track the set."""
+    cols = [f"{prefix}_{k}" for k in range(n_pockets + 1)]
+    if not all(c in names for c in cols):
+        return None
+    return np.stack([d[c] for c in cols], axis=1)
+
+
+def wave_rows(d, T_w, prog, path):
+    """(t0, [row closest to the end of each completed wave]): t0 is the first output row of the
+    wave (sub >= 0), up to an output interval late."""
+    t = d["t"]
+    started = np.where(d["sub"] >= 0)[0]
+    if len(started) == 0:
+        die(prog, f"{path}: the wave never started (sub < 0 in every row)")
+    t0 = t[started[0]]
+    n_done = int(math.floor((t[-1] - t0) / T_w + 1e-3))
+    return t0, [int(np.argmin(np.abs(t - (t0 + n * T_w)))) for n in range(1, n_done + 1)]

@@ -18,7 +18,6 @@ Exits non-zero, naming the file, when an input is missing, empty or not finite.
 import argparse
 import math
 import os
-import sys
 
 import matplotlib
 
@@ -29,44 +28,15 @@ import numpy as np  # noqa: E402
 import intestine_common as ic  # noqa: E402
 
 
+PROG = "plot_intestine.py"
+
+
 def die(msg):
-    print(f"plot_intestine.py: {msg}", file=sys.stderr)
-    sys.exit(1)
-
-
-def read_series(path):
-    if not os.path.isfile(path):
-        die(f"{path}: no such file")
-    with open(path) as f:
-        lines = [l for l in f if not l.startswith("#") and l.strip()]
-    if len(lines) < 3:
-        die(f"{path}: fewer than two rows")
-    names = lines[0].strip().split(",")
-    rows = []
-    for n, l in enumerate(lines[1:], start=2):
-        v = l.strip().split(",")
-        if len(v) != len(names):
-            die(f"{path}: row {n} has {len(v)} values, the header {len(names)}")
-        try:
-            r = [float(x) for x in v]
-        except ValueError:
-            die(f"{path}: row {n} has a value that is not a number")
-        if not all(math.isfinite(x) for x in r):
-            die(f"{path}: row {n} has a non-finite value")
-        rows.append(r)
-    data = np.array(rows)
-    return {n: data[:, i] for i, n in enumerate(names)}, names
+    ic.die(PROG, msg)
 
 
 def read_summary(path):
-    return ic.read_summary(path, "plot_intestine.py", finite=("u_F", "V_w", "T_w", "b", "nu"))
-
-
-def pocket_counts(d, names, prefix, n_pockets):
-    cols = [f"{prefix}_{k}" for k in range(n_pockets + 1)]
-    if not all(c in names for c in cols):
-        return None
-    return np.stack([d[c] for c in cols], axis=1)
+    return ic.read_summary(path, PROG, finite=("u_F", "V_w", "T_w", "b", "nu"))
 
 
 def main():
@@ -74,20 +44,16 @@ def main():
     ap.add_argument("outdir")
     ap.add_argument("--waves", default="5,7")
     a = ap.parse_args()
-    d, names = read_series(os.path.join(a.outdir, "intestine.csv"))
+    series = os.path.join(a.outdir, "intestine.csv")
+    d, names = ic.read_series(series, PROG)
     s = read_summary(os.path.join(a.outdir, "intestine-summary.csv"))
     t = d["t"]
     n_pockets = sum(1 for n in names if n.startswith("lift_"))
-    started = np.where(d["sub"] >= 0)[0]
-    if len(started) == 0:
-        die("intestine.csv: the wave never started (sub < 0 in every row)")
-    t0, Tw = t[started[0]], s["T_w"]
-    # rows closest to the end of every completed wave
-    # t0 is the first output row of the wave, up to an output interval late
-    n_done = int(math.floor((t[-1] - t0) / Tw + 1e-3))
-    wave_rows = [int(np.argmin(np.abs(t - (t0 + n * Tw)))) for n in range(1, n_done + 1)]
-    sets = [("white", pocket_counts(d, names, "white", n_pockets))]
-    red = pocket_counts(d, names, "red", n_pockets)
+    Tw = s["T_w"]
+    t0, wave_rows = ic.wave_rows(d, Tw, PROG, series)
+    n_done = len(wave_rows)
+    sets = [("white", ic.pocket_counts(d, names, "white", n_pockets))]
+    red = ic.pocket_counts(d, names, "red", n_pockets)
     if red is not None:
         sets.append(("red", red))
 
