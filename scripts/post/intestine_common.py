@@ -92,3 +92,10 @@ def wave_rows(d, T_w, prog, path):
     t0 = t[started[0]]
     n_done = int(math.floor((t[-1] - t0) / T_w + 1e-3))
     return t0, [int(np.argmin(np.abs(t - (t0 + n * T_w)))) for n in range(1, n_done + 1)]
+
+
+def save_png(fig, path, dpi=110):
+    """The figure to path through a temporary name, so a reader never sees half a PNG."""
+    fig.tight_layout()
+    fig.savefig(path + ".tmp.png", dpi=dpi)
+    os.replace(path + ".tmp.png", path)

@@ -152,10 +152,8 @@ def main():
     x.text(0.02, 0.98, "\n".join(lines), va="top", family="monospace", fontsize=10)
     fig.suptitle(f"Intestine: {n_pockets} pockets, b = {s['b'] * 100:g} cm, level {s.get('level', 0) * 100:.3g} cm, "
                  f"nu = {s['nu']:.3g} m^2/s, T_w = {Tw:.3g} s; {n_done} wave(s) completed")
-    fig.tight_layout()
     png = os.path.join(a.outdir, "intestine.png")
-    fig.savefig(png + ".tmp.png", dpi=110)
-    os.replace(png + ".tmp.png", png)
+    ic.save_png(fig, png)
     print(f"wrote {png} and {os.path.join(a.outdir, 'intestine-pockets.csv')}")
 
 

@@ -180,10 +180,8 @@ def main():
     x.grid(True, which="both", alpha=0.3)
     fig.suptitle(f"Colon study: {len(runs)} run(s), levels {', '.join(f'{L * 1e3:g}' for L in levels)} mm, "
                  f"nu {', '.join(f'{nu:g}' for nu in nus)} m²/s")
-    fig.tight_layout()
     png = os.path.join(out, "colon-study.png")
-    fig.savefig(png + ".tmp.png", dpi=110)
-    os.replace(png + ".tmp.png", png)
+    ic.save_png(fig, png)
     print(f"{PROG}: {len(runs)} run(s) of {len(a.dirs)}: wrote {csv_path} and {png}")
 
 

@@ -146,10 +146,8 @@ def main():
     ax[2].set_ylabel("red N/N0 [1]")
     ax[2].set_title("Red set per pocket at the end (Fig. 3.12)", fontsize=10)
     ax[2].legend(fontsize=8)
-    fig.tight_layout()
     png = os.path.join(out, "intestine-waves.png")
-    fig.savefig(png + ".tmp.png", dpi=110)
-    os.replace(png + ".tmp.png", png)
+    ic.save_png(fig, png)
     print(f"wrote {png} and {csv_path}")
 
 
