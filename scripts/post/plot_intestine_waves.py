@@ -74,7 +74,6 @@ def read_run(run_dir):
         ic.die(PROG, f"{series}: the red set is not in one pocket in the first row")
     _, rows = ic.wave_rows(d, s["T_w"], PROG, series)
     return {
-        "dir": run_dir,
         "name": os.path.basename(os.path.normpath(run_dir)),
         "H": wave_height(run_dir),
         "t": d["t"],

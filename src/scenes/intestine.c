@@ -71,9 +71,8 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
    * F sin^2(pi x/b) at the first free column, ~ F (pi x/b)^2, is what the membrane's step from
    * the fixed column to the free one has to take; a clamp of 1.5 mm at dx = 5e-4 m (0.07 F
    * there) let the lowered membrane open a gap at its edge, and liquid went through it
-   * (doc/validation.md, "Seven waves") */
-  /* (guarded: b and dx are checked below, after the options are read; capped so the cast is
-   * defined for any dx) */
+   * (doc/validation.md, "Seven waves"). Guarded and capped: b and dx are checked below, after
+   * the options are read, and the cast must be defined for any dx. */
   const double within = c->b > 0 && c->dx > 0 ? floor(c->b / (25.0 * c->dx) + 1e-9) : 1.0;
   c->clamp = PetscMax(1, (PetscInt)PetscMin(within, 1e6));
   PetscCall(PetscOptionsInt("-intestine_clamp",

@@ -21,7 +21,7 @@ def fail(msg):
     sys.exit(1)
 
 
-def last_row(run_dir):
+def first_last_rows(run_dir):
     with open(os.path.join(run_dir, "intestine.csv")) as f:
         lines = [l for l in f if not l.startswith("#") and l.strip()]
     names = lines[0].strip().split(",")
@@ -60,7 +60,7 @@ for run_dir, H in ((a.old, "2"), (a.new, "5")):
     waves = [x["wave"] for x in mine]
     if waves != ["1", "end"]:
         fail(f"{name}: rows for waves {waves}, expected 1 and end (the runs end after one wave)")
-    first, last = last_row(run_dir)
+    first, last = first_last_rows(run_dir)
     n_red = sum(v for k, v in first.items() if k.startswith("red_"))
     for x in mine:
         if x["H"] != H:
