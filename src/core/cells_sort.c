@@ -7,6 +7,7 @@
  * migrated particles, ends in the same rows). No row index survives a build anyway: migration
  * renumbers rows on several ranks, and everything kept across steps is a FIELD_MIGRATE field or
  * keyed by global id. */
+#include <string.h>
 #include "dmhs/cells.h"
 #include "dmhs/fields.h"
 
@@ -53,14 +54,23 @@ PetscErrorCode cells_sort_owned_rows(particles *ps, const double lo[DMHS_DIM],
       }
       first = start[k];
     }
-    /* move every field that travels with a particle through a packed copy */
+    /* move every field that travels with a particle, one field at a time through a buffer
+     * of one field's rows: a copy of all fields at once would add their whole size to the
+     * run's peak memory at every build */
     const field_desc *f[SORT_MAX_FIELDS];
     const int nf = particles_select_fields(FIELD_MIGRATE, f, SORT_MAX_FIELDS);
-    const size_t bytes = particles_packed_bytes(f, nf);
+    size_t widest = 0;
+    for (int k = 0; k < nf; k++)
+      widest = PetscMax(widest, fields_row_bytes(f[k]));
     char *buf;
-    PetscCall(PetscMalloc1(bytes * (size_t)n, &buf));
-    particles_pack(ps, f, nf, rows, n, NULL, buf);
-    particles_unpack(ps, f, nf, 0, n, buf);
+    PetscCall(PetscMalloc1(widest * (size_t)n, &buf));
+    for (int k = 0; k < nf; k++) {
+      const size_t row = fields_row_bytes(f[k]);
+      char *base = *fields_member(ps, f[k]);
+      for (PetscInt e = 0; e < n; e++)
+        memcpy(buf + row * (size_t)e, base + row * (size_t)rows[e], row);
+      memcpy(base, buf, row * (size_t)n);
+    }
     PetscCall(PetscFree(buf));
   }
   PetscCall(PetscFree3(cell, start, rows));
