@@ -6,45 +6,25 @@
  * same leaflet counts as a crossing (must stay 0). */
 #include <math.h>
 #include "dmhs/checkpoint.h"
-#include "vein_leaflets.h"
+#include "vein_column_bins.h"
 
 typedef struct {
   vein_leaflets leaves;
   PetscInt64 crossings_local; /* counted on this rank (rank 0 also holds a restart's count) */
+  column_bins bins[2];
 } vein_crossings;
 
-/* Side of leaflet w a point is on (+-1), 0 when not beside it: nearest column
- * mid-point c (coarse search every 4th column, then +-4), local tangent from
- * columns c-1 .. c+1, within dx along it and 3 dx across. */
-/* Updates (best, cb) with the columns lo, lo + step, ... <= hi of leaflet w
- * whose mid-point is nearer to p (squared distance, minimum image). */
-static void vein_nearest_column(const vein_leaflets *v, const domain *dom, int w, const double p[2],
-                                PetscInt lo, PetscInt hi, PetscInt step, double *best,
-                                PetscInt *cb) {
-  for (PetscInt c = lo; c <= hi; c += step) {
-    double m[2], d[2];
-    vein_leaflets_column_mid(v, w, c, m);
-    d[0] = p[0] - m[0];
-    d[1] = p[1] - m[1];
-    domain_min_image(dom, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1];
-    if (r2 < *best) {
-      *best = r2;
-      *cb = c;
-    }
-  }
-}
-
-static int vein_side_of(const vein_leaflets *v, const domain *dom, int w, const double p[2]) {
+/* Side of leaflet w a point p is on (+-1), 0 when not beside it: the nearest column
+ * mid-point c (d: p relative to the leaflet's box centre), the local tangent from columns
+ * c-1 .. c+1, within dx along it and 3 dx across. */
+static int vein_side_of(const vein_leaflets *v, const column_bins *b, const domain *dom, int w,
+                        const double p[2], const double d_box[2]) {
   const PetscInt nc = v->lay.leaflet[w].n_columns;
   const double dx = v->lay.dx;
-  double best = INFINITY, d[2];
-  PetscInt cb = -1;
-  vein_nearest_column(v, dom, w, p, 0, nc - 1, 4, &best, &cb);
-  if (best > 25 * dx * dx + 16 * dx * dx)
-    return 0; /* farther than ~6.4 dx from every 4th column */
-  vein_nearest_column(v, dom, w, p, PetscMax(cb - 4, 0), PetscMin(cb + 4, nc - 1), 1, &best, &cb);
-  double ma[2], mb[2], mc[2];
+  const PetscInt cb = column_bins_nearest(b, d_box, dx);
+  if (cb < 0)
+    return 0;
+  double ma[2], mb[2], mc[2], d[2];
   vein_leaflets_column_mid(v, w, PetscMax(cb - 1, 0), ma);
   vein_leaflets_column_mid(v, w, PetscMin(cb + 1, nc - 1), mb);
   vein_leaflets_column_mid(v, w, cb, mc);
@@ -61,6 +41,17 @@ static int vein_side_of(const vein_leaflets *v, const domain *dom, int w, const 
   if ((cb == 0 && along < 0) || (cb == nc - 1 && along > 0) || fabs(along) > dx)
     return 0;
   return across > 0 ? 1 : -1;
+}
+
+/* d - L round(d / L) in each periodic direction without a division: a position and a box
+ * centre are both within a period of the domain */
+static inline void vein_min_image_near(const domain *dom, double d[2]) {
+  for (int k = 0; k < 2; k++)
+    if (dom->periodic[k]) {
+      const double L = domain_length(dom, k);
+      if (d[k] > 0.5 * L || d[k] < -0.5 * L)
+        d[k] -= L * round(d[k] / L);
+    }
 }
 
 /* A particle's side is compared with the one recorded at the previous check
@@ -85,6 +76,7 @@ static PetscErrorCode vein_crossings_sample(diagnostic *self, sim *s) {
       box[w][d] = 0.5 * (lo[d] + hi[d]);
       box[w][2 + d] = 0.5 * (hi[d] - lo[d]) + 4 * v->lay.dx;
     }
+    PetscCall(column_bins_build(&c->bins[w], v, &s->dom, w, box[w]));
   }
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_FLUID)
@@ -93,10 +85,10 @@ static PetscErrorCode vein_crossings_sample(diagnostic *self, sim *s) {
     for (int w = 0; w < 2 && !now; w++) {
       /* only particles near the leaflet can be beside it: a cheap box test first */
       double d[2] = {ps->x[i][0] - box[w][0], ps->x[i][1] - box[w][1]};
-      domain_min_image(&s->dom, d);
+      vein_min_image_near(&s->dom, d);
       if (fabs(d[0]) > box[w][2] || fabs(d[1]) > box[w][3])
         continue;
-      const int sd = vein_side_of(v, &s->dom, w, ps->x[i]);
+      const int sd = vein_side_of(v, &c->bins[w], &s->dom, w, ps->x[i], d);
       if (sd)
         now = (w + 1) * sd;
     }
@@ -137,6 +129,8 @@ static PetscErrorCode vein_crossings_destroy(diagnostic *self) {
   vein_crossings *c = self->data;
   PetscFunctionBeginUser;
   PetscCall(vein_leaflets_destroy(&c->leaves));
+  for (int w = 0; w < 2; w++)
+    PetscCall(column_bins_destroy(&c->bins[w]));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
