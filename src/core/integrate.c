@@ -51,24 +51,37 @@ double dt_limits_min(const dt_limits *l, int *which) {
   return best;
 }
 
-/* The density the force evaluation sees: rho^n + dt/2 drho^n (the kick's), or
+/* The density the force evaluation sees, on every row but walls: rho^n + dt/2 drho^n (the
+ * kick's), or
  * with -sph_density_predict rho^n + dt drho^n, whose drho^n the second half
  * takes back for the trapezoid rho^n + dt/2 (drho^n + drho^{n+1}). The
  * half-step density lags the drifted positions by dt/2, and a pressure
  * oscillation of frequency omega then grows at omega^2 dt/4 (doc/theory.md). */
-static inline void integrate_density_first(particles *ps, PetscInt i, double dt, int predict) {
-  if (predict) {
-    ps->drho_prev[i] = ps->drho[i];
-    ps->rho[i] += dt * ps->drho[i];
-  } else
-    ps->rho[i] += 0.5 * dt * ps->drho[i];
+static void integrate_density_first(particles *ps, double dt, int predict) {
+  const PetscInt *restrict type = ps->type;
+  double *restrict rho = ps->rho, *restrict prev = ps->drho_prev;
+  const double *restrict drho = ps->drho;
+  if (predict)
+    for (PetscInt i = 0; i < ps->n_owned; i++) {
+      const int on = type[i] != PTYPE_WALL;
+      prev[i] = on ? drho[i] : prev[i];
+      rho[i] = on ? rho[i] + dt * drho[i] : rho[i];
+    }
+  else
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * drho[i] : rho[i];
 }
 
-static inline void integrate_density_second(particles *ps, PetscInt i, double dt, int predict) {
+static void integrate_density_second(particles *ps, double dt, int predict) {
+  const PetscInt *restrict type = ps->type;
+  double *restrict rho = ps->rho;
+  const double *restrict drho = ps->drho, *restrict prev = ps->drho_prev;
   if (predict)
-    ps->rho[i] += 0.5 * dt * (ps->drho[i] - ps->drho_prev[i]);
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * (drho[i] - prev[i]) : rho[i];
   else
-    ps->rho[i] += 0.5 * dt * ps->drho[i];
+    for (PetscInt i = 0; i < ps->n_owned; i++)
+      rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * drho[i] : rho[i];
 }
 
 /* What the enabled modules declare they integrate: density rates (continuity), and
@@ -89,28 +102,22 @@ PetscErrorCode integrate_first_half(sim *s) {
   const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (subcycled && ps->type[i] == PTYPE_SOLID) {
-      /* its density belongs to the liquid's step; its motion to the sub-steps */
-      if (continuity)
-        integrate_density_first(ps, i, dt, predict);
-      continue;
-    }
-    if (ps->type[i] == PTYPE_WALL) {
-      for (int k = 0; k < DMHS_DIM; k++) {
-        ps->v_est[i][k] = ps->v[i][k];
-        ps->x[i][k] += dt * ps->v[i][k];
-      }
-      continue;
-    }
-    for (int k = 0; k < DMHS_DIM; k++) {
-      ps->v_est[i][k] = ps->v[i][k] + dt * ps->a[i][k];
-      ps->v[i][k] += half * ps->a[i][k];
-      ps->x[i][k] += dt * ps->v[i][k];
-    }
-    if (continuity)
-      integrate_density_first(ps, i, dt, predict);
+  /* selects instead of branches, so that the loop vectorises: a wall keeps its prescribed
+   * velocity (v_est = v) and drifts; a sub-cycled solid keeps x, v and v_est (its motion
+   * belongs to the sub-steps, its density to the liquid's step) */
+  const PetscInt *restrict type = ps->type;
+  double *restrict x = &ps->x[0][0], *restrict v = &ps->v[0][0], *restrict v_est = &ps->v_est[0][0];
+  const double *restrict a = &ps->a[0][0];
+  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
+    const PetscInt t = type[j / DMHS_DIM];
+    const int wall = t == PTYPE_WALL, frozen = subcycled && t == PTYPE_SOLID;
+    const double vj = v[j], v_new = wall || frozen ? vj : vj + half * a[j];
+    v_est[j] = frozen ? v_est[j] : (wall ? vj : vj + dt * a[j]);
+    v[j] = v_new;
+    x[j] = frozen ? x[j] : x[j] + dt * v_new;
   }
+  if (continuity) /* walls' densities are the wall pass's (sph_wall.c) */
+    integrate_density_first(ps, dt, predict);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -124,21 +131,17 @@ PetscErrorCode integrate_second_half(sim *s) {
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] == PTYPE_WALL)
-      continue;
-    if (ps->type[i] == PTYPE_SOLID && half_solid != half) {
-      for (int k = 0; k < DMHS_DIM; k++)
-        ps->v[i][k] += half_solid * ps->a[i][k];
-      if (continuity)
-        integrate_density_second(ps, i, s->dt, predict);
-      continue;
-    }
-    for (int k = 0; k < DMHS_DIM; k++)
-      ps->v[i][k] += half * ps->a[i][k];
-    if (continuity)
-      integrate_density_second(ps, i, s->dt, predict);
+  /* selects instead of branches, so that the loop vectorises (integrate_first_half) */
+  const PetscInt *restrict type = ps->type;
+  double *restrict v = &ps->v[0][0];
+  const double *restrict a = &ps->a[0][0];
+  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
+    const PetscInt t = type[j / DMHS_DIM];
+    const double h = t == PTYPE_SOLID ? half_solid : half;
+    v[j] = t == PTYPE_WALL ? v[j] : v[j] + h * a[j];
   }
+  if (continuity)
+    integrate_density_second(ps, s->dt, predict);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
