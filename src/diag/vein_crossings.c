@@ -43,13 +43,13 @@ static int vein_side_of(const vein_leaflets *v, const column_bins *b, const doma
   return across > 0 ? 1 : -1;
 }
 
-/* d - L round(d / L) in each periodic direction without a division: a position and a box
- * centre are both within a period of the domain */
+/* domain_min_image's d - L round(d / L), with the division only where it changes d (at
+ * half a period or more): the box test runs for every liquid particle */
 static inline void vein_min_image_near(const domain *dom, double d[2]) {
   for (int k = 0; k < 2; k++)
     if (dom->periodic[k]) {
       const double L = domain_length(dom, k);
-      if (d[k] > 0.5 * L || d[k] < -0.5 * L)
+      if (d[k] >= 0.5 * L || d[k] <= -0.5 * L)
         d[k] -= L * round(d[k] / L);
     }
 }
