@@ -18,8 +18,10 @@ typedef struct cells {
   unsigned char *flag;    /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */
   /* Per sorted row a, its candidates as two contiguous runs of the cell order: the own
    * cell after a and the E cell, [a + 1, run_end1[a]), and the NW, N and NE cells,
-   * [run_first2[a], run_last2[a]). Rows are sorted by x within a cell, so the parts of
-   * the E, NW and NE cells at least a cutoff away in x are cut off the runs' ends. */
+   * [run_first2[a], run_last2[a]). Rows are sorted by x within a cell, so each run is in
+   * x order and keeps only the rows that can lie within the cutoff: x < x_a + cutoff in
+   * the first; in the second |x - x_a| < sqrt(cutoff^2 - dy^2), dy the height of the
+   * upper cells' lower edge above a (an empty run, 0 and 0, when dy >= cutoff). */
   PetscInt *run_end1, *run_first2, *run_last2;
   PetscInt n_alloc_sorted;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */

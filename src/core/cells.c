@@ -59,56 +59,68 @@ static PetscErrorCode cells_grow_pairs(cells *c) {
   PetscFunctionReturn(0);
 }
 
-/* First position in [first, last) whose x is >= bound, starting the scan at `from`
- * (the bound only grows along a cell). */
+/* First position in [first, last) whose x is >= bound (rows in x order: a binary search). */
 static inline PetscInt cells_first_at_or_past(const particles *ps, const PetscInt *order,
-                                              PetscInt from, PetscInt last, double bound) {
-  PetscInt b = from;
-  while (b < last && ps->x[order[b]][0] < bound)
-    b++;
-  return b;
+                                              PetscInt first, PetscInt last, double bound) {
+  while (first < last) {
+    const PetscInt mid = first + (last - first) / 2;
+    if (ps->x[order[mid]][0] < bound)
+      first = mid + 1;
+    else
+      last = mid;
+  }
+  return first;
 }
 
 /* The candidate runs of every position (cells.h). Half the stencil (self, E, NW, N, NE)
  * lies in two stretches of the cell order: the own cell and E are consecutive, and so are
- * NW, N and NE. A partner is closer than the cutoff, so |dx| < cutoff: in E and NE only
- * the rows with x < x_a + cutoff can be partners (a prefix: rows are in x order), in NW
- * only those with x > x_a - cutoff (a suffix). The rows of a cell grow in x, so each cut
- * moves only forward through its neighbour cell. Cut at the build's positions with the
- * build's cutoff, the runs hold every pair of the list, and every pair a sweep finds
- * until the next build (no particle moves half the skin before it). */
-static void cells_cut_runs(cells *c, const particles *ps) {
+ * NW, N and NE; each stretch is in x order (rows by x within a cell, the cells left to
+ * right). A partner is closer than the cutoff R: in the own cell and E only the rows with
+ * x < x_a + R can be partners (a prefix). A row of the upper cells lies at least
+ * dy = y_up - y_a above a (y_up: the upper row's lower edge; a cell is at least R
+ * high), so only the rows with
+ * |x - x_a| < sqrt(R^2 - dy^2) can be: one stretch found by two binary searches, empty
+ * for a near the bottom of its cell. Cut at the build's positions with the build's cutoff,
+ * the runs hold every pair of the list, and every pair a sweep finds until the next build
+ * (no particle moves half the skin before it). */
+static void cells_cut_runs(cells *c, const particles *ps, double inv_height) {
   const PetscInt n0 = c->n[0], n1 = c->n[1];
   const PetscInt *start = c->start, *order = c->order;
-  /* a margin over the cutoff far above round-off: a row cut off fails the pair test by a
-   * wide enough margin that the list is exactly the one an uncut search finds */
-  const double cut = c->size * (1.0 + 1e-9);
-  for (PetscInt cy = 0; cy < n1; cy++)
+  /* margins far above round-off: a row cut off fails the pair test by a wide enough
+   * margin that the list is exactly the one an uncut search finds (a row placed in the
+   * upper cells lies above y_up but for the round-off of cells_locate) */
+  const double cut = c->size * (1.0 + 1e-9), dy_margin = 1e-9 * c->size;
+  for (PetscInt cy = 0; cy < n1; cy++) {
+    const double y_up = c->lo[1] + (double)(cy + 1) / inv_height; /* cells_locate's edge */
     for (PetscInt cx = 0; cx < n0; cx++) {
       const PetscInt cell = cy * n0 + cx, up = (cy + 1) * n0 + cx;
       const PetscBool has_e = cx + 1 < n0, has_up = cy + 1 < n1;
-      const PetscBool has_nw = has_up && cx > 0, has_ne = has_up && cx + 1 < n0;
-      PetscInt e = has_e ? start[cell + 1] : 0, nw = has_nw ? start[up - 1] : 0;
-      PetscInt ne = has_ne ? start[up + 1] : 0;
+      const PetscInt end1 = has_e ? start[cell + 2] : start[cell + 1];
+      const PetscInt first_up = has_up && cx > 0 ? start[up - 1] : (has_up ? start[up] : 0);
+      const PetscInt end_up = has_up ? (cx + 1 < n0 ? start[up + 2] : start[up + 1]) : 0;
       for (PetscInt a = start[cell]; a < start[cell + 1]; a++) {
-        const double xa = ps->x[order[a]][0];
-        if (has_e)
-          e = cells_first_at_or_past(ps, order, e, start[cell + 2], xa + cut);
-        c->run_end1[a] = has_e ? e : start[cell + 1];
-        if (!has_up) {
+        const double xa = ps->x[order[a]][0], ya = ps->x[order[a]][1];
+        c->run_end1[a] = cells_first_at_or_past(ps, order, a + 1, end1, xa + cut);
+        const double dy = PetscMax(y_up - ya - dy_margin, 0.0);
+        if (!has_up || dy >= cut) {
           c->run_first2[a] = c->run_last2[a] = 0;
           continue;
         }
-        if (has_nw) { /* the first NW row with x > xa - cut */
-          while (nw < start[up] && !(ps->x[order[nw]][0] > xa - cut))
-            nw++;
+        const double half_width = sqrt(cut * cut - dy * dy);
+        /* the first row with x > xa - half_width: past every row with x <= it */
+        PetscInt lo = first_up, hi = end_up;
+        while (lo < hi) {
+          const PetscInt mid = lo + (hi - lo) / 2;
+          if (ps->x[order[mid]][0] > xa - half_width)
+            hi = mid;
+          else
+            lo = mid + 1;
         }
-        c->run_first2[a] = has_nw ? nw : start[up];
-        if (has_ne)
-          ne = cells_first_at_or_past(ps, order, ne, start[up + 2], xa + cut);
-        c->run_last2[a] = has_ne ? ne : start[up + 1];
+        c->run_first2[a] = lo;
+        c->run_last2[a] = cells_first_at_or_past(ps, order, lo, end_up, xa + half_width);
       }
     }
+  }
 }
 
 PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
@@ -178,7 +190,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
                  (bonded && bonded->slot[i] >= 0 ? 4 : 0);
   }
 
-  cells_cut_runs(c, ps);
+  cells_cut_runs(c, ps, inv[1]);
 
   c->n_pairs = 0;
   c->generation++;
