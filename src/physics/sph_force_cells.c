@@ -111,6 +111,10 @@ SPH_INLINE void own_flush(own_sums *o, int continuity, int diffusion) {
 SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artificial, int diffusion,
                             int same_v, const cells_args *A, PetscInt a, PetscInt first,
                             PetscInt last, own_sums *o) {
+  /* the buffer's fill and the pair count in locals: read through o they would be read
+   * again after every store (the intrinsics' stores may alias anything) */
+  int n_buf = o->n;
+  PetscInt64 pairs = o->pairs;
   const __m512d xa = _mm512_set1_pd(A->X[a]), ya = _mm512_set1_pd(A->Y[a]);
   const __m512d vxa = _mm512_set1_pd(A->VX[a]), vya = _mm512_set1_pd(A->VY[a]);
   const int read_est = (artificial || continuity) && !same_v; /* else EX, EY may not exist */
@@ -196,13 +200,13 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
     _mm512_mask_storeu_pd(AY, m,
                           _mm512_sub_pd(_mm512_maskz_loadu_pd(m, AY), _mm512_mul_pd(Ma, T1)));
     /* a's own, buffered in partner order */
-    _mm512_storeu_pd(o->x + o->n, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T0)));
-    _mm512_storeu_pd(o->y + o->n, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T1)));
+    _mm512_storeu_pd(o->x + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T0)));
+    _mm512_storeu_pd(o->y + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T1)));
     if (continuity) {
       const __m512d q = _mm512_mul_pd(grad, vr);
       double *DR = A->DR + b;
       __m512d dr = _mm512_add_pd(_mm512_maskz_loadu_pd(m, DR), _mm512_mul_pd(Ma, q));
-      _mm512_storeu_pd(o->q + o->n, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, q)));
+      _mm512_storeu_pd(o->q + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, q)));
       if (diffusion) {
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
         const __mmask8 md =
@@ -215,15 +219,20 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
          * it so that the buffers stay aligned: 0 where md is off, and adding 0 leaves
          * a sum's bits as the pair-list sweep that skips the term */
         const __m512d own_d = _mm512_maskz_mul_pd(md, _mm512_mul_pd(Mb, IRb), D);
-        _mm512_storeu_pd(o->d + o->n, _mm512_maskz_compress_pd(m, own_d));
+        _mm512_storeu_pd(o->d + n_buf, _mm512_maskz_compress_pd(m, own_d));
       }
       _mm512_mask_storeu_pd(DR, m, dr);
     }
-    o->n += __builtin_popcount((unsigned)m);
-    o->pairs += __builtin_popcount((unsigned)m);
-    if (o->n > SPH_CELLS_BUF - 8)
+    n_buf += __builtin_popcount((unsigned)m);
+    pairs += __builtin_popcount((unsigned)m);
+    if (n_buf > SPH_CELLS_BUF - 8) {
+      o->n = n_buf;
       own_flush(o, continuity, diffusion);
+      n_buf = 0;
+    }
   }
+  o->n = n_buf;
+  o->pairs = pairs;
 }
 
 SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int artificial,
