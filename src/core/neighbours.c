@@ -2,6 +2,7 @@
  * skin, the partition's balance check, or a module forced it), migration and the rebuild of
  * rows, ghosts, cells and the pair list, the ghost refresh between builds (the fields modules
  * read there), and the rebuild a restart needs from the positions of the last build. */
+#include <stdint.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/neighbours.h"
@@ -69,10 +70,18 @@ static PetscErrorCode neighbours_due(sim *s, PetscBool *rebuild) {
   /* on every rank count alike, so that runs stay bitwise rank-count invariant */
   if (s->part.interval > 0 && s->step % s->part.interval == 0)
     PetscFunctionReturn(0);
+  /* the largest squared displacement, over its bits as unsigned integers (they order as
+   * the values do for numbers >= 0), so that the scan vectorises */
+  uint64_t max_bits = 0;
+  const double *restrict x = &ps->x[0][0], *restrict x_build = &ps->x_build[0][0];
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    const double dx = ps->x[i][0] - ps->x_build[i][0], dy = ps->x[i][1] - ps->x_build[i][1];
-    local = PetscMax(local, dx * dx + dy * dy);
+    const double dx = x[2 * i] - x_build[2 * i], dy = x[2 * i + 1] - x_build[2 * i + 1];
+    const double d2 = dx * dx + dy * dy;
+    uint64_t bits;
+    memcpy(&bits, &d2, sizeof(bits));
+    max_bits = bits > max_bits ? bits : max_bits;
   }
+  memcpy(&local, &max_bits, sizeof(local));
   PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, s->comm));
   *rebuild = global > 0.25 * s->skin * s->skin ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
