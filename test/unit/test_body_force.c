@@ -12,7 +12,9 @@
  *   - the option errors (F and amplitude together, a negative period, three
  *     components) and the scene defaults (body_force_set_default*, _get);
  *   - the SPH module's time-step limit on it, 0.25 sqrt(0.5 h / |a|max),
- *     |a|max = |(Fx, |Fy| + g)| (body_force_peak);
+ *     |a|max = |(Fx, |Fy| + g)| (body_force_peak), and its scans beside it: the sound-speed
+ *     limit takes max|v| over every particle, the acceleration limit max|a| over the liquid
+ *     only (a solid's or a wall's larger |a| does not count);
  *   - the two phases of a force evaluation (sim_add_module_forces): a module
  *     enabled before body_force reads, during its compute, the body force at
  *     the evaluation's own time, not the previous evaluation's. */
@@ -201,6 +203,36 @@ static void test_max_dt(void **state) {
   assert_true(body_force_limit() == -1.0);
 }
 
+/* The SPH limit of that name, or -1 when it is not there. */
+static double sph_limit(const char *name) {
+  dt_limits l = {0};
+  OK(sph->max_dt(sph, &s, &l));
+  for (int k = 0; k < l.n; k++)
+    if (!strcmp(l.item[k].name, name))
+      return l.item[k].value;
+  return -1.0;
+}
+
+static void test_sph_speed_scans(void **state) {
+  (void)state;
+  sph_defaults(sph)->c0 = 10.0;
+  const double v[PTYPE_COUNT][2] = {{3, 4}, {0, -6}, {1, 1}, {0, 2}};    /* max |v| 6: a wall */
+  const double a[PTYPE_COUNT][2] = {{0, -8}, {90, 0}, {0, 70}, {50, 0}}; /* the liquid's: 8 */
+  for (int t = 0; t < PTYPE_COUNT; t++)
+    for (int k = 0; k < 2; k++) {
+      s.ps.v[t][k] = v[t][k];
+      s.ps.a[t][k] = a[t][k];
+    }
+  const double hs = 0.5 * 4e-4, sound = 0.25 * hs / (10.0 + 6.0), accel = 0.25 * sqrt(hs / 8.0);
+  const double got_sound = sph_limit("sph sound speed"), got_accel = sph_limit("sph acceleration");
+  /* limits are rounded down to 2^-24 relative */
+  assert_true(got_sound <= sound && got_sound >= sound * (1.0 - 0x1p-23));
+  assert_true(got_accel <= accel && got_accel >= accel * (1.0 - 0x1p-23));
+  for (int t = 0; t < PTYPE_COUNT; t++) /* the liquid at rest: no acceleration limit */
+    s.ps.a[t][0] = s.ps.a[t][1] = t == PTYPE_FLUID ? 0.0 : 1e3;
+  assert_true(sph_limit("sph acceleration") == -1.0);
+}
+
 /* A module enabled before body_force that reads body_force_current in its compute,
  * as the wall pass does: what it saw, per evaluation. */
 static double seen_ax;
@@ -234,6 +266,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_walls_refused, setup, teardown),
       cmocka_unit_test_setup_teardown(test_option_errors, setup, teardown),
       cmocka_unit_test_setup_teardown(test_scene_defaults, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_sph_speed_scans, setup, teardown),
       cmocka_unit_test_setup_teardown(test_max_dt, setup, teardown),
       cmocka_unit_test_setup_teardown(test_prepare_before_compute, setup, teardown),
   };

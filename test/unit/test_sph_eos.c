@@ -4,9 +4,14 @@
  *   - sph_eos_density inverts sph_eos_pressure for every kind (round trip to 1e-12 relative);
  *   - Tait tension below -B gives a small positive density, not NaN;
  *   - the background pressure p_b shifts p by exactly p_b for every kind (p_b = 0: unchanged),
- *     and sph_eos_density_bg inverts sph_eos_pressure_bg. */
+ *     and sph_eos_density_bg inverts sph_eos_pressure_bg;
+ *   - sph_eos_compute (the pass over the rows, vectorised per kind) gives every non-wall row,
+ *     owned or ghost, exactly sph_eos_pressure_bg of its density, and leaves walls' p as they
+ *     were, for every kind. */
 #include "unit_common.h"
+#include "dmhs/sim.h"
 #include "physics/sph_eos.h"
+#include "physics/sph_force.h"
 
 static const double rho0 = 998.2, c0 = 13.5;
 static const double rhos[] = {900.0, 990.0, 998.2, 1003.7, 1050.0, 1200.0};
@@ -73,9 +78,41 @@ static void test_background_pressure(void **state) {
     }
 }
 
+static void test_eos_pass(void **state) {
+  (void)state;
+  sim s;
+  OK(PetscMemzero(&s, sizeof(s)));
+  fields_reset();
+  OK(unit_enable_sph_fields());
+  OK(particles_create(&s.ps));
+  const double x[2] = {0, 0}, v[2] = {0, 0};
+  const PetscInt n = 37; /* not a multiple of a vector's width */
+  for (PetscInt i = 0; i < n; i++)
+    OK(particles_add_owned(&s.ps, i, (particle_type)(i % PTYPE_COUNT), x, v, 1.0,
+                           rhos[i % N_RHO] + 0.01 * (double)i, NULL));
+  s.ps.n_owned = 30; /* the last rows stand for ghosts, which the pass covers too */
+  s.ps.n_ghost = n - 30;
+  const sph_eos_kind kinds[] = {SPH_EOS_TAIT, SPH_EOS_LINEAR, SPH_EOS_LINEAR_SHIFTED};
+  for (size_t k = 0; k < 3; k++) {
+    const sph_params sp = {.rho0 = rho0, .c0 = c0, .eos = kinds[k], .p_background = 250.0};
+    for (PetscInt i = 0; i < n; i++)
+      s.ps.p[i] = -7.0;
+    OK(sph_eos_compute(&s, &sp));
+    for (PetscInt i = 0; i < n; i++) {
+      const double want = s.ps.type[i] == PTYPE_WALL ? -7.0 : sph_eos_pressure_bg(&sp, s.ps.rho[i]);
+      if (!(s.ps.p[i] == want))
+        fail_msg("eos %d, row %d (type %d): p = %.17g, want %.17g", (int)k, (int)i,
+                 (int)s.ps.type[i], s.ps.p[i], want);
+    }
+  }
+  OK(particles_destroy(&s.ps));
+  fields_reset();
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_tait),
+      cmocka_unit_test(test_eos_pass),
       cmocka_unit_test(test_linear),
       cmocka_unit_test(test_density_inverts_pressure),
       cmocka_unit_test(test_tait_tension_clamped),
