@@ -5,6 +5,10 @@
  *   - under a constant acceleration, n velocity-Verlet steps reproduce free flight
  *     exactly: x = x0 + v0 t + a t^2/2, v = v0 + a t, with v_est = v^n + dt a;
  *   - a wall particle moves with its velocity and is never kicked;
+ *   - with sub-cycled solids, the liquid's step leaves a solid's x, v and v_est to the
+ *     sub-steps but for its second half kick of one sub-step (dt / 2 n_sub), and advances its
+ *     density; a clot beside it is kicked and drifts as the liquid; the walls' densities
+ *     are not integrated;
  *   - with continuity density, rho advances by dt * drho per step (two half kicks),
  *     and is left alone with summation density;
  *   - with -sph_density_predict the forces see rho^n + dt drho^n and the step
@@ -88,6 +92,47 @@ static void test_free_flight(void **state) {
   }
   assert_close(s.ps.rho[0], 1000.0 + drho * t, 1e-9);
   assert_true(s.ps.rho[1] == 1000.0);
+  OK(particles_destroy(&s.ps));
+}
+
+static void test_subcycled_solid(void **state) {
+  (void)state;
+  static sim s;
+  make_sim(&s, SPH_DENSITY_CONTINUITY);
+  s.ts.subcycling = PETSC_TRUE;
+  s.ts.n_sub = 3;
+  const double x0[2] = {0.1, -0.2}, v0[2] = {1.5, -0.5}, a[2] = {-3.0, 9.81}, drho = 12.0;
+  const particle_type types[] = {PTYPE_SOLID, PTYPE_CLOT, PTYPE_WALL, PTYPE_FLUID};
+  for (PetscInt i = 0; i < 4; i++) {
+    OK(particles_add_owned(&s.ps, i, types[i], x0, v0, 1.0, 1000.0, NULL));
+    for (int k = 0; k < 2; k++) {
+      s.ps.a[i][k] = a[k];
+      s.ps.v_est[i][k] = -9.0; /* what the solid keeps */
+    }
+    s.ps.drho[i] = drho;
+  }
+  const double dt = s.dt;
+  OK(integrate_first_half(&s));
+  for (int k = 0; k < 2; k++) {
+    assert_true(s.ps.x[0][k] == x0[k] && s.ps.v[0][k] == v0[k] && s.ps.v_est[0][k] == -9.0);
+    for (PetscInt i = 1; i < 4; i += 2) { /* the clot and the liquid */
+      assert_true(s.ps.v_est[i][k] == v0[k] + dt * a[k]);
+      assert_true(s.ps.v[i][k] == v0[k] + 0.5 * dt * a[k]);
+      assert_true(s.ps.x[i][k] == x0[k] + dt * (v0[k] + 0.5 * dt * a[k]));
+    }
+    assert_true(s.ps.v_est[2][k] == v0[k] && s.ps.v[2][k] == v0[k]);
+    assert_true(s.ps.x[2][k] == x0[k] + dt * v0[k]);
+  }
+  for (PetscInt i = 0; i < 4; i++)
+    assert_true(s.ps.rho[i] == (i == 2 ? 1000.0 : 1000.0 + 0.5 * dt * drho));
+  OK(integrate_second_half(&s));
+  for (int k = 0; k < 2; k++) {
+    assert_true(s.ps.v[0][k] == v0[k] + 0.5 * dt / 3.0 * a[k]);
+    assert_true(s.ps.v[1][k] == v0[k] + 0.5 * dt * a[k] + 0.5 * dt * a[k]);
+    assert_true(s.ps.v[2][k] == v0[k]);
+  }
+  for (PetscInt i = 0; i < 4; i++)
+    assert_true(s.ps.rho[i] == (i == 2 ? 1000.0 : 1000.0 + 0.5 * dt * drho + 0.5 * dt * drho));
   OK(particles_destroy(&s.ps));
 }
 
@@ -178,6 +223,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_dt_limits),
       cmocka_unit_test(test_free_flight),
+      cmocka_unit_test(test_subcycled_solid),
       cmocka_unit_test(test_summation_density_not_integrated),
       cmocka_unit_test(test_density_predict_trapezoid),
       cmocka_unit_test(test_density_predict_ringing),
