@@ -276,8 +276,7 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(neighbours_update(s, s->force_rebuild));
     s->force_rebuild = PETSC_FALSE;
     PetscCall(sim_compute_forces(s));
-    PetscCall(integrate_second_half(s));
-    PetscCall(integrate_check_state(s));
+    PetscCall(integrate_second_half_checked(s)); /* the second kick and the state check */
     for (int m = 0; m < s->n_modules; m++)
       if (s->modules[m]->post_step)
         PetscCall(s->modules[m]->post_step(s->modules[m], s));
