@@ -59,15 +59,17 @@ static PetscErrorCode cells_grow_pairs(cells *c) {
   PetscFunctionReturn(0);
 }
 
-/* First position in [first, last) whose x is >= bound (rows in x order: a binary search). */
-static inline PetscInt cells_first_at_or_past(const particles *ps, const PetscInt *order,
-                                              PetscInt first, PetscInt last, double bound) {
+/* First position in [first, last) whose x is past bound: x >= bound, or x > bound when
+ * strict (rows in x order: a binary search). */
+static inline PetscInt cells_first_past(const particles *ps, const PetscInt *order, PetscInt first,
+                                        PetscInt last, double bound, PetscBool strict) {
   while (first < last) {
     const PetscInt mid = first + (last - first) / 2;
-    if (ps->x[order[mid]][0] < bound)
-      first = mid + 1;
-    else
+    const double x = ps->x[order[mid]][0];
+    if (strict ? x > bound : x >= bound)
       last = mid;
+    else
+      first = mid + 1;
   }
   return first;
 }
@@ -100,24 +102,17 @@ static void cells_cut_runs(cells *c, const particles *ps, double inv_height) {
       const PetscInt end_up = has_up ? (cx + 1 < n0 ? start[up + 2] : start[up + 1]) : 0;
       for (PetscInt a = start[cell]; a < start[cell + 1]; a++) {
         const double xa = ps->x[order[a]][0], ya = ps->x[order[a]][1];
-        c->run_end1[a] = cells_first_at_or_past(ps, order, a + 1, end1, xa + cut);
+        c->run_end1[a] = cells_first_past(ps, order, a + 1, end1, xa + cut, PETSC_FALSE);
         const double dy = PetscMax(y_up - ya - dy_margin, 0.0);
         if (!has_up || dy >= cut) {
           c->run_first2[a] = c->run_last2[a] = 0;
           continue;
         }
         const double half_width = sqrt(cut * cut - dy * dy);
-        /* the first row with x > xa - half_width: past every row with x <= it */
-        PetscInt lo = first_up, hi = end_up;
-        while (lo < hi) {
-          const PetscInt mid = lo + (hi - lo) / 2;
-          if (ps->x[order[mid]][0] > xa - half_width)
-            hi = mid;
-          else
-            lo = mid + 1;
-        }
-        c->run_first2[a] = lo;
-        c->run_last2[a] = cells_first_at_or_past(ps, order, lo, end_up, xa + half_width);
+        c->run_first2[a] =
+            cells_first_past(ps, order, first_up, end_up, xa - half_width, PETSC_TRUE);
+        c->run_last2[a] =
+            cells_first_past(ps, order, c->run_first2[a], end_up, xa + half_width, PETSC_FALSE);
       }
     }
   }

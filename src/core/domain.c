@@ -6,8 +6,13 @@ void domain_min_image(const domain *d, double dx[DMHS_DIM]) {
   for (int k = 0; k < DMHS_DIM; k++) {
     if (!d->periodic[k])
       continue;
-    double L = domain_length(d, k);
-    dx[k] -= L * round(dx[k] / L);
+    const double L = domain_length(d, k);
+    /* most separations are shorter than half a period, and round(dx / L) is then 0: the
+     * division only where it can be other (the margin keeps dx / L's rounding out of it) */
+    if (fabs(dx[k]) > 0.4999 * L)
+      dx[k] -= L * round(dx[k] / L);
+    else
+      dx[k] += 0.0; /* what the formula leaves: -0 becomes +0, any other value stays */
   }
 }
 

@@ -72,18 +72,6 @@ static void integrate_density_first(particles *ps, double dt, int predict) {
       rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * drho[i] : rho[i];
 }
 
-static void integrate_density_second(particles *ps, double dt, int predict) {
-  const PetscInt *restrict type = ps->type;
-  double *restrict rho = ps->rho;
-  const double *restrict drho = ps->drho, *restrict prev = ps->drho_prev;
-  if (predict)
-    for (PetscInt i = 0; i < ps->n_owned; i++)
-      rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * (drho[i] - prev[i]) : rho[i];
-  else
-    for (PetscInt i = 0; i < ps->n_owned; i++)
-      rho[i] = type[i] != PTYPE_WALL ? rho[i] + 0.5 * dt * drho[i] : rho[i];
-}
-
 /* What the enabled modules declare they integrate: density rates (continuity), and
  * whether their forces see the predicted density. */
 static void integrate_density_mode(const sim *s, int *continuity, int *predict) {
@@ -122,6 +110,69 @@ PetscErrorCode integrate_first_half(sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* 1 when x is an infinity or a NaN: the exponent bits all set, tested as integers so that the
+ * scans below have no branch per value */
+static inline unsigned not_finite(double x) {
+  uint64_t u;
+  memcpy(&u, &x, sizeof(u));
+  return (u & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL;
+}
+
+/* The second kick over the rows' components: v += h a, h = dt/2 (a sub-cycled solid's: the
+ * last sub-step's dt/2 n_sub), walls untouched; selects instead of branches, so that the loop
+ * vectorises. With check (a constant), also the state check's test of x, v and a on what it
+ * leaves (integrate_state_ok), while the values are at hand; returns nonzero on a bad one. */
+static inline unsigned integrate_kick_components(const sim *s, double half, double half_solid,
+                                                 int check) {
+  const particles *ps = &s->ps;
+  const PetscInt *restrict type = ps->type;
+  const double *restrict x = &ps->x[0][0], *restrict a = &ps->a[0][0];
+  double *restrict v = &ps->v[0][0];
+  double lo[DMHS_DIM], hi[DMHS_DIM];
+  for (int k = 0; k < DMHS_DIM; k++) { /* periodic directions wrap at the next build */
+    lo[k] = s->dom.periodic[k] ? -INFINITY : s->dom.lo[k];
+    hi[k] = s->dom.periodic[k] ? INFINITY : s->dom.hi[k];
+  }
+  const double lo0 = lo[0], lo1 = lo[1], hi0 = hi[0], hi1 = hi[1];
+  unsigned bad = 0;
+  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
+    const PetscInt t = type[j / DMHS_DIM];
+    const double h = t == PTYPE_SOLID ? half_solid : half;
+    const double vj = v[j], aj = a[j];
+    const double v_new = t == PTYPE_WALL ? vj : vj + h * aj;
+    v[j] = v_new;
+    if (check) {
+      const double xj = x[j];
+      const double lo_j = j % DMHS_DIM ? lo1 : lo0, hi_j = j % DMHS_DIM ? hi1 : hi0;
+      bad |= not_finite(xj) | not_finite(v_new) | not_finite(aj) | (xj < lo_j) | (xj > hi_j);
+    }
+  }
+  return bad;
+}
+
+/* The second half of the density (density, a constant: 0 none, 1 the half step, 2 the
+ * predicted density's trapezoid, integrate_density_first), walls untouched; with check,
+ * also the state check's test of rho, p and drho. */
+static inline unsigned integrate_density_rows(const particles *ps, double dt, int density,
+                                              int check) {
+  const PetscInt *restrict type = ps->type;
+  const double *restrict p = ps->p, *restrict drho = ps->drho, *restrict prev = ps->drho_prev;
+  double *restrict rho = ps->rho;
+  unsigned bad = 0;
+  for (PetscInt i = 0; i < ps->n_owned; i++) {
+    const double r = rho[i], rate = drho[i];
+    double r_new = r;
+    if (density == 1)
+      r_new = type[i] != PTYPE_WALL ? r + 0.5 * dt * rate : r;
+    else if (density == 2)
+      r_new = type[i] != PTYPE_WALL ? r + 0.5 * dt * (rate - prev[i]) : r;
+    rho[i] = r_new;
+    if (check)
+      bad |= not_finite(r_new) | not_finite(p[i]) | not_finite(rate) | (r_new <= 0);
+  }
+  return bad;
+}
+
 PetscErrorCode integrate_second_half(sim *s) {
   particles *ps = &s->ps;
   const double half = 0.5 * s->dt;
@@ -131,27 +182,11 @@ PetscErrorCode integrate_second_half(sim *s) {
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  /* selects instead of branches, so that the loop vectorises (integrate_first_half) */
-  const PetscInt *restrict type = ps->type;
-  double *restrict v = &ps->v[0][0];
-  const double *restrict a = &ps->a[0][0];
-  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
-    const PetscInt t = type[j / DMHS_DIM];
-    const double h = t == PTYPE_SOLID ? half_solid : half;
-    v[j] = t == PTYPE_WALL ? v[j] : v[j] + h * a[j];
-  }
+  (void)integrate_kick_components(s, half, half_solid, 0);
   if (continuity)
-    integrate_density_second(ps, s->dt, predict);
+    (void)integrate_density_rows(ps, s->dt, predict ? 2 : 1, 0);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   PetscFunctionReturn(0);
-}
-
-/* 1 when x is an infinity or a NaN: the exponent bits all set, tested as integers so that the
- * scan below has no branch per value */
-static inline unsigned not_finite(double x) {
-  uint64_t u;
-  memcpy(&u, &x, sizeof(u));
-  return (u & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL;
 }
 
 /* One branch-free pass over the owned rows; only a run that has gone wrong pays for the
@@ -181,50 +216,8 @@ static PetscBool integrate_state_ok(const sim *s) {
   return bad ? PETSC_FALSE : PETSC_TRUE;
 }
 
-/* The second kick and the state check in two passes instead of three (with SPH's fields):
- * the same operations as integrate_second_half, and integrate_state_ok's test on what they
- * leave while the values are at hand. Each loop has one width of rows (the components of
- * x, v, a; the scalars rho, p, drho), so that each vectorises. */
-static unsigned integrate_kick_check_components(const sim *s, double half, double half_solid,
-                                                const double lo[DMHS_DIM],
-                                                const double hi[DMHS_DIM]) {
-  const particles *ps = &s->ps;
-  const PetscInt *restrict type = ps->type;
-  const double *restrict x = &ps->x[0][0], *restrict a = &ps->a[0][0];
-  double *restrict v = &ps->v[0][0];
-  const double lo0 = lo[0], lo1 = lo[1], hi0 = hi[0], hi1 = hi[1];
-  unsigned bad = 0;
-  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
-    const PetscInt t = type[j / DMHS_DIM];
-    const double h = t == PTYPE_SOLID ? half_solid : half;
-    const double vj = v[j], aj = a[j], xj = x[j];
-    const double v_new = t == PTYPE_WALL ? vj : vj + h * aj;
-    v[j] = v_new;
-    const double lo_j = j % DMHS_DIM ? lo1 : lo0, hi_j = j % DMHS_DIM ? hi1 : hi0;
-    bad |= not_finite(xj) | not_finite(v_new) | not_finite(aj) | (xj < lo_j) | (xj > hi_j);
-  }
-  return bad;
-}
-
-/* density: 0 none, 1 half step, 2 predicted (integrate_density_second) */
-static inline unsigned integrate_density_check_rows(const particles *ps, double dt, int density) {
-  const PetscInt *restrict type = ps->type;
-  const double *restrict p = ps->p, *restrict drho = ps->drho, *restrict prev = ps->drho_prev;
-  double *restrict rho = ps->rho;
-  unsigned bad = 0;
-  for (PetscInt i = 0; i < ps->n_owned; i++) {
-    const double r = rho[i], rate = drho[i];
-    double r_new = r;
-    if (density == 1)
-      r_new = type[i] != PTYPE_WALL ? r + 0.5 * dt * rate : r;
-    else if (density == 2)
-      r_new = type[i] != PTYPE_WALL ? r + 0.5 * dt * (rate - prev[i]) : r;
-    rho[i] = r_new;
-    bad |= not_finite(r_new) | not_finite(p[i]) | not_finite(rate) | (r_new <= 0);
-  }
-  return bad;
-}
-
+/* With SPH's fields, two passes over the rows instead of the three of integrate_second_half
+ * and integrate_check_state: the same operations and the same test. */
 PetscErrorCode integrate_second_half_checked(sim *s) {
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
@@ -237,19 +230,14 @@ PetscErrorCode integrate_second_half_checked(sim *s) {
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
-  double lo[DMHS_DIM], hi[DMHS_DIM];
-  for (int k = 0; k < DMHS_DIM; k++) { /* periodic directions wrap at the next build */
-    lo[k] = s->dom.periodic[k] ? -INFINITY : s->dom.lo[k];
-    hi[k] = s->dom.periodic[k] ? INFINITY : s->dom.hi[k];
-  }
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  unsigned bad = integrate_kick_check_components(s, half, half_solid, lo, hi);
+  unsigned bad = integrate_kick_components(s, half, half_solid, 1);
   if (!continuity) /* each density mode its own loop */
-    bad |= integrate_density_check_rows(ps, s->dt, 0);
+    bad |= integrate_density_rows(ps, s->dt, 0, 1);
   else if (!predict)
-    bad |= integrate_density_check_rows(ps, s->dt, 1);
+    bad |= integrate_density_rows(ps, s->dt, 1, 1);
   else
-    bad |= integrate_density_check_rows(ps, s->dt, 2);
+    bad |= integrate_density_rows(ps, s->dt, 2, 1);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
   if (bad) /* the check's own search names the particle and stops the run */
     PetscCall(integrate_check_state(s));

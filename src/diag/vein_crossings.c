@@ -43,17 +43,6 @@ static int vein_side_of(const vein_leaflets *v, const column_bins *b, const doma
   return across > 0 ? 1 : -1;
 }
 
-/* domain_min_image's d - L round(d / L), with the division only where it changes d (at
- * half a period or more): the box test runs for every liquid particle */
-static inline void vein_min_image_near(const domain *dom, double d[2]) {
-  for (int k = 0; k < 2; k++)
-    if (dom->periodic[k]) {
-      const double L = domain_length(dom, k);
-      if (d[k] >= 0.5 * L || d[k] <= -0.5 * L)
-        d[k] -= L * round(d[k] / L);
-    }
-}
-
 /* A particle's side is compared with the one recorded at the previous check
  * (none at step 0: the sides are only recorded). */
 static PetscErrorCode vein_crossings_sample(diagnostic *self, sim *s) {
@@ -85,7 +74,7 @@ static PetscErrorCode vein_crossings_sample(diagnostic *self, sim *s) {
     for (int w = 0; w < 2 && !now; w++) {
       /* only particles near the leaflet can be beside it: a cheap box test first */
       double d[2] = {ps->x[i][0] - box[w][0], ps->x[i][1] - box[w][1]};
-      vein_min_image_near(&s->dom, d);
+      domain_min_image(&s->dom, d);
       if (fabs(d[0]) > box[w][2] || fabs(d[1]) > box[w][3])
         continue;
       const int sd = vein_side_of(v, &c->bins[w], &s->dom, w, ps->x[i], d);
