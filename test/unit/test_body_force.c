@@ -175,14 +175,14 @@ static void test_scene_defaults(void **state) {
   OK(registry_finalize());
 }
 
-/* The "body force" limit of the SPH module (its force criterion on the drive's peak). */
-static double body_force_limit(void) {
+/* The SPH module's limit of that name, or -1 when it has none. */
+static double sph_limit(const char *name) {
   dt_limits l = {0};
   OK(sph->max_dt(sph, &s, &l));
   for (int k = 0; k < l.n; k++)
-    if (!strcmp(l.item[k].name, "body force"))
+    if (!strcmp(l.item[k].name, name))
       return l.item[k].value;
-  return -1.0; /* none */
+  return -1.0;
 }
 
 static void test_max_dt(void **state) {
@@ -193,24 +193,14 @@ static void test_max_dt(void **state) {
   /* |a|max = sqrt(0.3^2 + (0.2 + 9.81)^2) */
   const double amax = sqrt(0.09 + 10.01 * 10.01), want = 0.25 * sqrt(0.5 * 4e-4 / amax);
   assert_close(body_force_peak(m), amax, 1e-15);
-  const double got = body_force_limit();
+  const double got = sph_limit("body force");
   assert_true(got <= want && got >= want * (1.0 - 0x1p-23)); /* limits are rounded down */
   /* no drive, no gravity: no limit */
   OK(PetscOptionsClear(NULL));
   OK(PetscOptionsInsertString(NULL, "-body_force 0,0 -gravity 0"));
   OK(m->set_from_options(m, &s));
   assert_true(body_force_peak(m) == 0.0);
-  assert_true(body_force_limit() == -1.0);
-}
-
-/* The SPH limit of that name, or -1 when it is not there. */
-static double sph_limit(const char *name) {
-  dt_limits l = {0};
-  OK(sph->max_dt(sph, &s, &l));
-  for (int k = 0; k < l.n; k++)
-    if (!strcmp(l.item[k].name, name))
-      return l.item[k].value;
-  return -1.0;
+  assert_true(sph_limit("body force") == -1.0);
 }
 
 static void test_sph_speed_scans(void **state) {
