@@ -24,6 +24,12 @@ typedef struct cells {
    * upper cells' lower edge above a (an empty run, 0 and 0, when dy >= cutoff). */
   PetscInt *run_end1, *run_first2, *run_last2;
   PetscInt n_alloc_sorted;
+  /* The cell order as segments of consecutive rows: positions [seg_pos[s], seg_pos[s + 1])
+   * hold rows seg_row[s], seg_row[s] + 1, ... A segment is all owned or all ghost. The owned
+   * rows are sorted into cell order at the build (cells_sort.c), so they form a few long
+   * segments between the ghosts: a copy into cell order (or back) streams through them. */
+  PetscInt n_seg, n_alloc_seg;
+  PetscInt *seg_pos, *seg_row;
   /* Pair list: pairs (i, j) with |x_i - x_j| < cutoff, at least one of them owned. */
   PetscInt n_pairs, n_alloc_pairs;
   PetscBool no_pair_list; /* every reader walks the cells: sort and flag only, list no pairs */

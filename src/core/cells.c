@@ -25,6 +25,7 @@ PetscErrorCode cells_destroy(cells *c) {
   PetscCall(PetscFree(c->xs));
   PetscCall(PetscFree(c->flag));
   PetscCall(PetscFree3(c->run_end1, c->run_first2, c->run_last2));
+  PetscCall(PetscFree2(c->seg_pos, c->seg_row));
   PetscCall(PetscMemzero(c, sizeof(*c)));
   PetscFunctionReturn(0);
 }
@@ -118,6 +119,30 @@ static void cells_cut_runs(cells *c, const particles *ps, double inv_height) {
   }
 }
 
+/* The segments of consecutive rows in the cell order (cells.h), split where the owned rows
+ * end so that a segment is all owned or all ghost. */
+static PetscErrorCode cells_find_segments(cells *c, PetscInt n, PetscInt n_owned) {
+  const PetscInt *order = c->order;
+  PetscFunctionBeginUser;
+  PetscInt n_seg = n > 0 ? 1 : 0;
+  for (PetscInt a = 1; a < n; a++)
+    n_seg += order[a] != order[a - 1] + 1 || order[a] == n_owned;
+  if (n_seg + 1 > c->n_alloc_seg) {
+    PetscCall(PetscFree2(c->seg_pos, c->seg_row));
+    c->n_alloc_seg = n_seg + n_seg / 4 + 1;
+    PetscCall(PetscMalloc2(c->n_alloc_seg, &c->seg_pos, c->n_alloc_seg, &c->seg_row));
+  }
+  PetscInt s = 0;
+  for (PetscInt a = 0; a < n; a++)
+    if (a == 0 || order[a] != order[a - 1] + 1 || order[a] == n_owned) {
+      c->seg_pos[s] = a;
+      c->seg_row[s++] = order[a];
+    }
+  c->seg_pos[n_seg] = n;
+  c->n_seg = n_seg;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[DMHS_DIM],
                                  const double hi[DMHS_DIM], double cutoff) {
   const PetscInt n = ps->n_owned + ps->n_ghost;
@@ -186,6 +211,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
   }
 
   cells_cut_runs(c, ps, inv[1]);
+  PetscCall(cells_find_segments(c, n, n_owned));
 
   c->n_pairs = 0;
   c->generation++;

@@ -42,13 +42,14 @@ static inline const double (*sph_viscous_velocity(const particles *ps,
 /* flops of one pair inside h (-log_view) */
 double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
 /* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
- * pair-list sweep. Its copy of the fields in cell order: x, y, v_visc (2), v_est (2), p/rho^2,
- * 1/rho, m, rho, a (2), d rho/dt, and per row the pair flags. */
+ * pair-list sweep. Its copy of the fields in cell order, one row of cells in each of two slots:
+ * x, y, v_visc (2), v_est (2), p/rho^2, 1/rho, m, rho, a (2), d rho/dt, and per row the pair
+ * flags. */
 #define SPH_CELLS_NFIELDS 13
 typedef struct sph_cells_work {
-  PetscInt n_alloc;
-  double *f[SPH_CELLS_NFIELDS]; /* NULL where the run does not read the field */
-  unsigned char *fl;
+  PetscInt n_alloc;                /* rows per slot */
+  double *f[2][SPH_CELLS_NFIELDS]; /* NULL where the run does not read the field */
+  unsigned char *fl[2];
   PetscInt64 n_pairs; /* pairs inside h in the last sweep */
 } sph_cells_work;
 /* PETSC_TRUE when this build has the vectorised sweep */

@@ -4,12 +4,17 @@
  *
  * Why it is faster: the pair list reaches both particles of every pair through
  * two indices (a gather per operand, a scatter per sum), one pair at a time. Here
- * every field the sweep reads is copied once per step into cell order
- * (sph_cells_work), and a particle's partners are contiguous runs of that copy:
- * its own cell after it plus the next cell (E), and the three cells above it
- * (NW, N, NE) — the half stencil of cells.c, whose cells are consecutive in
- * row-major order — each cut at the build to the rows within the cutoff in x
- * (cells.h, run_end1 ...). Eight candidates at a time are tested (r < h) and computed
+ * every field the sweep reads is copied into cell order, and a particle's partners
+ * are contiguous runs of that copy: its own cell after it plus the next cell (E), and
+ * the three cells above it (NW, N, NE) — the half stencil of cells.c, whose cells are
+ * consecutive in row-major order — each cut at the build to the rows within the
+ * cutoff in x (cells.h, run_end1 ...). The first run lies in the particle's row of
+ * cells, the second in the row above, so the copy holds two rows of cells at a time
+ * (sph_cells_work's two slots, used in turn): a row is copied in just before it is
+ * needed and its sums go back to the particles right after its sweep, while they are
+ * still in the core's cache. A copy of every row at once streamed the whole field set
+ * through memory three times a step (copy, sweep, write-back) and took an eighth of
+ * the step. Eight candidates at a time are tested (r < h) and computed
  * with unit-stride loads; the partners' sums are updated in place with masked
  * stores. The particle's own sums are added in the order of its partners (the
  * lanes in use are compressed into a buffer and added one by one), which keeps
@@ -53,34 +58,78 @@ PetscBool sph_force_cells_applies(const sph_params *sp) {
 
 PetscErrorCode sph_cells_work_destroy(sph_cells_work *w) {
   PetscFunctionBeginUser;
-  for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
-    PetscCall(PetscFree(w->f[f]));
-  PetscCall(PetscFree(w->fl));
+  for (int k = 0; k < 2; k++) {
+    for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
+      PetscCall(PetscFree(w->f[k][f]));
+    PetscCall(PetscFree(w->fl[k]));
+  }
   PetscCall(PetscMemzero(w, sizeof(*w)));
   PetscFunctionReturn(0);
 }
 
 #if SPH_CELLS_SIMD
-/* The cell-order copy of the fields in `need` (bit f: w->f[f]), with 8 padding entries after
- * n so that a vector may read past the end; fields a run does not read are not allocated. */
-static PetscErrorCode sph_cells_ensure(sph_cells_work *w, PetscInt n, unsigned need) {
+/* Two slots of n_row rows each for the fields in `need` (bit f: w->f[k][f]); fields a run
+ * does not read are not allocated. */
+static PetscErrorCode sph_cells_ensure(sph_cells_work *w, PetscInt n_row, unsigned need) {
   PetscFunctionBeginUser;
-  if (n + 8 > w->n_alloc) {
+  if (n_row > w->n_alloc) {
+    const PetscInt grown = n_row + n_row / 4;
     PetscCall(sph_cells_work_destroy(w));
-    w->n_alloc = n + n / 16 + 8;
-    PetscCall(PetscCalloc1(w->n_alloc, &w->fl));
+    w->n_alloc = grown;
   }
-  for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
-    if ((need >> f & 1u) && !w->f[f])
-      PetscCall(PetscCalloc1(w->n_alloc, &w->f[f]));
+  for (int k = 0; k < 2; k++) {
+    if (!w->fl[k])
+      PetscCall(PetscCalloc1(w->n_alloc, &w->fl[k]));
+    for (int f = 0; f < SPH_CELLS_NFIELDS; f++)
+      if ((need >> f & 1u) && !w->f[k][f])
+        PetscCall(PetscCalloc1(w->n_alloc, &w->f[k][f]));
+  }
   PetscFunctionReturn(0);
 }
 
+/* A two-component field's rows into two arrays, and back (unit stride: vectorised) */
+SPH_INLINE void cells_copy_pair(double *restrict d0, double *restrict d1,
+                                const double *restrict src, PetscInt len) {
+  for (PetscInt t = 0; t < len; t++) {
+    d0[t] = src[2 * t];
+    d1[t] = src[2 * t + 1];
+  }
+}
+SPH_INLINE void cells_store_pair(double *restrict dst, const double *restrict s0,
+                                 const double *restrict s1, PetscInt len) {
+  for (PetscInt t = 0; t < len; t++) {
+    dst[2 * t] = s0[t];
+    dst[2 * t + 1] = s1[t];
+  }
+}
+
+/* m, 1/rho and p/rho^2 (vectorised: the divisions eight at a time) */
+SPH_INLINE void cells_copy_scalars(double *restrict M, double *restrict IR, double *restrict P,
+                                   const double *restrict mass, const double *restrict rho,
+                                   const double *restrict p, PetscInt len) {
+  for (PetscInt t = 0; t < len; t++) {
+    M[t] = mass[t];
+    IR[t] = 1.0 / rho[t];
+    P[t] = p[t] * IR[t] * IR[t];
+  }
+}
+/* the pair flags of the build (cells.c) and whether a row is a wall now */
+SPH_INLINE void cells_copy_flags(unsigned char *restrict fl, const unsigned char *restrict flag,
+                                 const PetscInt *restrict type, PetscInt len) {
+  for (PetscInt t = 0; t < len; t++)
+    fl[t] = (unsigned char)((flag[t] & (FL_NO_PAIR | FL_SOLID)) |
+                            (type[t] == PTYPE_WALL ? FL_WALL_NOW : 0));
+}
+
+/* One row of cells in a slot: slot position t holds cell-order position base + t. */
 typedef struct {
-  const double *X, *Y, *VX, *VY, *EX, *EY, *P, *IR, *M, *RHO;
+  double *X, *Y, *VX, *VY, *EX, *EY, *P, *IR, *M, *RHO;
   double *AX, *AY, *DR;
-  const unsigned char *FL;
-  const PetscInt *order;       /* copy position -> row */
+  unsigned char *FL;
+  const PetscInt *order; /* slot position -> row */
+} cells_slot;
+
+typedef struct {
   const struct topology *excl; /* bonded pairs to leave out, or NULL */
   const particles *ps;
   double h2, r2_floor, inv_h, grad_norm, mu_sum, h, av_h2, neg_alpha_c0, beta, two_dhc;
@@ -107,24 +156,24 @@ SPH_INLINE void own_flush(own_sums *o, int continuity, int diffusion) {
   o->n = 0;
 }
 
-/* Particle a against the candidates [first, last) of the copy. */
+/* Particle a of slot S against the candidates [first, last) of slot T. */
 SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artificial, int diffusion,
-                            int same_v, const cells_args *A, PetscInt a, PetscInt first,
-                            PetscInt last, own_sums *o) {
+                            int same_v, const cells_args *A, const cells_slot *S, PetscInt a,
+                            const cells_slot *T, PetscInt first, PetscInt last, own_sums *o) {
   /* the buffer's fill and the pair count in locals: read through o they would be read
    * again after every store (the intrinsics' stores may alias anything) */
   int n_buf = o->n;
   PetscInt64 pairs = o->pairs;
-  const __m512d xa = _mm512_set1_pd(A->X[a]), ya = _mm512_set1_pd(A->Y[a]);
-  const __m512d vxa = _mm512_set1_pd(A->VX[a]), vya = _mm512_set1_pd(A->VY[a]);
+  const __m512d xa = _mm512_set1_pd(S->X[a]), ya = _mm512_set1_pd(S->Y[a]);
+  const __m512d vxa = _mm512_set1_pd(S->VX[a]), vya = _mm512_set1_pd(S->VY[a]);
   const int read_est = (artificial || continuity) && !same_v; /* else EX, EY may not exist */
-  const __m512d exa = read_est ? _mm512_set1_pd(A->EX[a]) : _mm512_setzero_pd();
-  const __m512d eya = read_est ? _mm512_set1_pd(A->EY[a]) : _mm512_setzero_pd();
-  const __m512d Pa = _mm512_set1_pd(A->P[a]), IRa = _mm512_set1_pd(A->IR[a]);
-  const __m512d Ma = _mm512_set1_pd(A->M[a]);
-  const __m512d MIRa = _mm512_set1_pd(A->M[a] * A->IR[a]);
-  const __m512d RHOa = diffusion || artificial ? _mm512_set1_pd(A->RHO[a]) : _mm512_setzero_pd();
-  const unsigned fa = A->FL[a];
+  const __m512d exa = read_est ? _mm512_set1_pd(S->EX[a]) : _mm512_setzero_pd();
+  const __m512d eya = read_est ? _mm512_set1_pd(S->EY[a]) : _mm512_setzero_pd();
+  const __m512d Pa = _mm512_set1_pd(S->P[a]), IRa = _mm512_set1_pd(S->IR[a]);
+  const __m512d Ma = _mm512_set1_pd(S->M[a]);
+  const __m512d MIRa = _mm512_set1_pd(S->M[a] * S->IR[a]);
+  const __m512d RHOa = diffusion || artificial ? _mm512_set1_pd(S->RHO[a]) : _mm512_setzero_pd();
+  const unsigned fa = S->FL[a];
   const __m512i no_pair = _mm512_set1_epi64(fa & FL_NO_PAIR);
   const __m512i wall_now = _mm512_set1_epi64(FL_WALL_NOW);
   const __m512d h2 = _mm512_set1_pd(A->h2), r2_floor = _mm512_set1_pd(A->r2_floor);
@@ -133,14 +182,14 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
   const __m512d sign = _mm512_set1_pd(-0.0);
   for (PetscInt b = first; b < last; b += 8) {
     const __mmask8 tail = last - b >= 8 ? 0xFF : (__mmask8)((1u << (last - b)) - 1u);
-    const __m512d dx = _mm512_sub_pd(xa, _mm512_maskz_loadu_pd(tail, A->X + b));
-    const __m512d dy = _mm512_sub_pd(ya, _mm512_maskz_loadu_pd(tail, A->Y + b));
+    const __m512d dx = _mm512_sub_pd(xa, _mm512_maskz_loadu_pd(tail, T->X + b));
+    const __m512d dy = _mm512_sub_pd(ya, _mm512_maskz_loadu_pd(tail, T->Y + b));
     const __m512d r2 =
         _mm512_max_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), r2_floor);
     __mmask8 m = _mm512_mask_cmp_pd_mask(tail, r2, h2, _CMP_LT_OQ);
     if (!m)
       continue;
-    const __m512i fb = _mm512_cvtepu8_epi64(_mm_maskz_loadu_epi8(tail, A->FL + b));
+    const __m512i fb = _mm512_cvtepu8_epi64(_mm_maskz_loadu_epi8(tail, T->FL + b));
     if (fa & FL_NO_PAIR)
       m &= (__mmask8)~_mm512_test_epi64_mask(fb, no_pair);
     if ((fa & FL_SOLID) && A->excl) { /* the pair list's exclusions, lane by lane */
@@ -148,7 +197,7 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
       while (both) {
         const int l = __builtin_ctz(both);
         both &= both - 1;
-        if (topology_excluded(A->excl, A->ps, A->order[a], A->order[b + l]))
+        if (topology_excluded(A->excl, A->ps, S->order[a], T->order[b + l]))
           m &= (__mmask8) ~(1u << l);
       }
     }
@@ -159,25 +208,25 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
     __m512d grad = _mm512_mul_pd(_mm512_mul_pd(grad_norm, mq), mq);
     if (kernel == SPH_KERNEL_WENDLAND)
       grad = _mm512_mul_pd(grad, mq);
-    const __m512d Pb = _mm512_maskz_loadu_pd(m, A->P + b),
-                  IRb = _mm512_maskz_loadu_pd(m, A->IR + b);
-    const __m512d Mb = _mm512_maskz_loadu_pd(m, A->M + b);
+    const __m512d Pb = _mm512_maskz_loadu_pd(m, T->P + b),
+                  IRb = _mm512_maskz_loadu_pd(m, T->IR + b);
+    const __m512d Mb = _mm512_maskz_loadu_pd(m, T->M + b);
     const __m512d press = _mm512_xor_pd(_mm512_add_pd(Pa, Pb), sign);
     const __m512d visc = _mm512_mul_pd(_mm512_mul_pd(mu_sum, _mm512_mul_pd(IRa, IRb)), grad);
     const __m512d pg = _mm512_mul_pd(press, grad);
-    const __m512d vvx = _mm512_sub_pd(vxa, _mm512_maskz_loadu_pd(m, A->VX + b));
-    const __m512d vvy = _mm512_sub_pd(vya, _mm512_maskz_loadu_pd(m, A->VY + b));
+    const __m512d vvx = _mm512_sub_pd(vxa, _mm512_maskz_loadu_pd(m, T->VX + b));
+    const __m512d vvy = _mm512_sub_pd(vya, _mm512_maskz_loadu_pd(m, T->VY + b));
     __m512d T0 = _mm512_add_pd(_mm512_mul_pd(pg, dx), _mm512_mul_pd(visc, vvx));
     __m512d T1 = _mm512_add_pd(_mm512_mul_pd(pg, dy), _mm512_mul_pd(visc, vvy));
     __m512d vr = _mm512_setzero_pd(), RHOb = _mm512_setzero_pd();
     if (artificial || continuity) {
       /* same_v: no walls, v_est is v_visc (sph.c) */
-      const __m512d vex = same_v ? vvx : _mm512_sub_pd(exa, _mm512_maskz_loadu_pd(m, A->EX + b));
-      const __m512d vey = same_v ? vvy : _mm512_sub_pd(eya, _mm512_maskz_loadu_pd(m, A->EY + b));
+      const __m512d vex = same_v ? vvx : _mm512_sub_pd(exa, _mm512_maskz_loadu_pd(m, T->EX + b));
+      const __m512d vey = same_v ? vvy : _mm512_sub_pd(eya, _mm512_maskz_loadu_pd(m, T->EY + b));
       vr = _mm512_add_pd(_mm512_mul_pd(vex, dx), _mm512_mul_pd(vey, dy));
     }
     if (artificial || diffusion)
-      RHOb = _mm512_maskz_loadu_pd(m, A->RHO + b);
+      RHOb = _mm512_maskz_loadu_pd(m, T->RHO + b);
     if (artificial) {
       const __mmask8 approaching = _mm512_mask_cmp_pd_mask(m, vr, _mm512_setzero_pd(), _CMP_LT_OQ);
       if (approaching) {
@@ -194,7 +243,7 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
       }
     }
     /* the partners' sums, in place */
-    double *AX = A->AX + b, *AY = A->AY + b;
+    double *AX = T->AX + b, *AY = T->AY + b;
     _mm512_mask_storeu_pd(AX, m,
                           _mm512_sub_pd(_mm512_maskz_loadu_pd(m, AX), _mm512_mul_pd(Ma, T0)));
     _mm512_mask_storeu_pd(AY, m,
@@ -204,7 +253,7 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
     _mm512_storeu_pd(o->y + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T1)));
     if (continuity) {
       const __m512d q = _mm512_mul_pd(grad, vr);
-      double *DR = A->DR + b;
+      double *DR = T->DR + b;
       __m512d dr = _mm512_add_pd(_mm512_maskz_loadu_pd(m, DR), _mm512_mul_pd(Ma, q));
       _mm512_storeu_pd(o->q + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, q)));
       if (diffusion) {
@@ -235,32 +284,41 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
   o->pairs = pairs;
 }
 
+/* The particles at cell-order positions [first, last), one row of cells held in slot S from
+ * position base_s on; their upper partners are in slot T, the row above, from base_t on. */
 SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int artificial,
-                                  int diffusion, int same_v, const cells_args *A, const cells *c) {
+                                  int diffusion, int same_v, const cells_args *A, const cells *c,
+                                  const cells_slot *S, PetscInt base_s, const cells_slot *T,
+                                  PetscInt base_t, PetscInt first, PetscInt last) {
   const PetscInt *restrict end1 = c->run_end1, *restrict first2 = c->run_first2,
                            *restrict last2 = c->run_last2;
-  const PetscInt n = c->start[c->n[0] * c->n[1]];
   own_sums o;
   o.pairs = 0;
-  for (PetscInt a = 0; a < n; a++) {
+  for (PetscInt a = first; a < last; a++) {
+    const PetscInt t = a - base_s;
     o.n = 0;
-    o.ax = A->AX[a];
-    o.ay = A->AY[a];
-    o.ad = continuity ? A->DR[a] : 0.0;
-    cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, a + 1, end1[a], &o);
-    cells_range(kernel, continuity, artificial, diffusion, same_v, A, a, first2[a], last2[a], &o);
+    o.ax = S->AX[t];
+    o.ay = S->AY[t];
+    o.ad = continuity ? S->DR[t] : 0.0;
+    cells_range(kernel, continuity, artificial, diffusion, same_v, A, S, t, S, t + 1,
+                end1[a] - base_s, &o);
+    if (last2[a] > first2[a])
+      cells_range(kernel, continuity, artificial, diffusion, same_v, A, S, t, T, first2[a] - base_t,
+                  last2[a] - base_t, &o);
     own_flush(&o, continuity, diffusion);
-    A->AX[a] = o.ax;
-    A->AY[a] = o.ay;
+    S->AX[t] = o.ax;
+    S->AY[t] = o.ay;
     if (continuity)
-      A->DR[a] = o.ad;
+      S->DR[t] = o.ad;
   }
   return o.pairs;
 }
 
 #define CSWEEP1(name, K, C, AV, D, V)                                                              \
-  static PetscInt64 name(const cells_args *A, const cells *c) {                                    \
-    return cells_sweep(K, C, AV, D, V, A, c);                                                      \
+  static PetscInt64 name(const cells_args *A, const cells *c, const cells_slot *S,                 \
+                         PetscInt base_s, const cells_slot *T, PetscInt base_t, PetscInt first,    \
+                         PetscInt last) {                                                          \
+    return cells_sweep(K, C, AV, D, V, A, c, S, base_s, T, base_t, first, last);                   \
   }
 /* each combination with v_est read apart from v_visc (walls) and as one (no walls) */
 #define CSWEEP(name, K, C, AV, D) CSWEEP1(name, K, C, AV, D, 0) CSWEEP1(name##_v, K, C, AV, D, 1)
@@ -270,10 +328,70 @@ SPH_SWEEP_VARIANTS(CSWEEP, csweep_wendland, SPH_KERNEL_WENDLAND)
 /* [Lucy, Wendland][summation, continuity, continuity + diffusion][artificial viscosity][same v] */
 #define CPAIR(name)                                                                                \
   { name, name##_v }
-static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *) = {
+static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *,
+                                               const cells_slot *, PetscInt, const cells_slot *,
+                                               PetscInt, PetscInt, PetscInt) = {
     SPH_SWEEP_ROW(CPAIR, csweep_lucy),
     SPH_SWEEP_ROW(CPAIR, csweep_wendland),
 };
+#endif
+
+#if SPH_CELLS_SIMD
+typedef struct {
+  const cells *c;
+  particles *ps;
+  const double (*vv)[2]; /* the viscous term's velocity (sph_viscous_velocity) */
+  int need_est, continuity, copy_rho;
+} cells_fill_args;
+
+/* The next segment (cells.h) that reaches past `first`, from *seg on: the copies visit the
+ * rows of cells in order, so each keeps its own cursor. */
+static inline PetscInt cells_segment_from(const cells *c, PetscInt first, PetscInt *seg) {
+  while (*seg < c->n_seg && c->seg_pos[*seg + 1] <= first)
+    (*seg)++;
+  return *seg;
+}
+
+/* Cell-order positions [first, last) into slot S (slot position = position - first). */
+static void cells_slot_fill(const cells_fill_args *F, cells_slot *S, PetscInt first, PetscInt last,
+                            PetscInt *seg) {
+  const cells *c = F->c;
+  const particles *ps = F->ps;
+  S->order = c->order + first;
+  for (PetscInt g = cells_segment_from(c, first, seg); g < c->n_seg && c->seg_pos[g] < last; g++) {
+    const PetscInt k0 = PetscMax(c->seg_pos[g], first), k1 = PetscMin(c->seg_pos[g + 1], last);
+    const PetscInt i0 = c->seg_row[g] + (k0 - c->seg_pos[g]), t0 = k0 - first, len = k1 - k0;
+    cells_copy_pair(S->X + t0, S->Y + t0, ps->x[i0], len);
+    cells_copy_pair(S->VX + t0, S->VY + t0, F->vv[i0], len);
+    if (F->need_est)
+      cells_copy_pair(S->EX + t0, S->EY + t0, ps->v_est[i0], len);
+    cells_copy_pair(S->AX + t0, S->AY + t0, ps->a[i0], len);
+    cells_copy_scalars(S->M + t0, S->IR + t0, S->P + t0, ps->mass + i0, ps->rho + i0, ps->p + i0,
+                       len);
+    if (F->copy_rho)
+      memcpy(S->RHO + t0, ps->rho + i0, (size_t)len * sizeof(double));
+    if (F->continuity)
+      memcpy(S->DR + t0, ps->drho + i0, (size_t)len * sizeof(double));
+    cells_copy_flags(S->FL + t0, c->flag + k0, ps->type + i0, len);
+  }
+}
+
+/* The sums of positions [first, last) from slot S back to their rows: the owned rows only,
+ * the ghosts' sums are dropped (no reverse communication, doc/parallel.md). */
+static void cells_slot_store(const cells_fill_args *F, const cells_slot *S, PetscInt first,
+                             PetscInt last, PetscInt *seg, int continuity) {
+  const cells *c = F->c;
+  particles *ps = F->ps;
+  for (PetscInt g = cells_segment_from(c, first, seg); g < c->n_seg && c->seg_pos[g] < last; g++) {
+    if (c->seg_row[g] >= ps->n_owned)
+      continue;
+    const PetscInt k0 = PetscMax(c->seg_pos[g], first), k1 = PetscMin(c->seg_pos[g + 1], last);
+    const PetscInt i0 = c->seg_row[g] + (k0 - c->seg_pos[g]), t0 = k0 - first, len = k1 - k0;
+    cells_store_pair(ps->a[i0], S->AX + t0, S->AY + t0, len);
+    if (continuity)
+      memcpy(ps->drho + i0, S->DR + t0, (size_t)len * sizeof(double));
+  }
+}
 #endif
 
 PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_work *w,
@@ -301,72 +419,33 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
     need |= 0x200;
   if (continuity)
     need |= 0x1000;
-  PetscCall(sph_cells_ensure(w, n, need));
-  double *X = w->f[0], *Y = w->f[1], *VX = w->f[2], *VY = w->f[3];
-  double *EX = visc_is_est ? VX : w->f[4], *EY = visc_is_est ? VY : w->f[5];
-  double *P = w->f[6], *IR = w->f[7], *M = w->f[8], *RHO = w->f[9];
-  double *AX = w->f[10], *AY = w->f[11], *DR = w->f[12];
-  const PetscInt *restrict order = c->order;
-  /* one stream per loop: the rows are in cell order already (cells_sort.c), so each
-   * loop reads nearly in order */
-  for (PetscInt k = 0; k < n; k++)
-    M[k] = ps->mass[order[k]];
-  for (PetscInt k = 0; k < n; k++) {
-    const PetscInt i = order[k];
-    X[k] = ps->x[i][0];
-    Y[k] = ps->x[i][1];
+  const PetscInt n0 = c->n[0], n1 = c->n[1];
+  PetscInt n_row = 1;
+  for (PetscInt cy = 0; cy < n1; cy++)
+    n_row = PetscMax(n_row, c->start[(cy + 1) * n0] - c->start[cy * n0]);
+  PetscCall(sph_cells_ensure(w, n_row, need));
+  cells_slot slot[2];
+  for (int k = 0; k < 2; k++) {
+    double *const *f = w->f[k];
+    slot[k] = (cells_slot){
+        .X = f[0],
+        .Y = f[1],
+        .VX = f[2],
+        .VY = f[3],
+        .EX = visc_is_est ? f[2] : f[4],
+        .EY = visc_is_est ? f[3] : f[5],
+        .P = f[6],
+        .IR = f[7],
+        .M = f[8],
+        .RHO = f[9],
+        .AX = f[10],
+        .AY = f[11],
+        .DR = f[12],
+        .FL = w->fl[k],
+    };
   }
-  const double(*vv)[2] = sph_viscous_velocity(ps, visc_is_est);
-  for (PetscInt k = 0; k < n; k++) {
-    const PetscInt i = order[k];
-    VX[k] = vv[i][0];
-    VY[k] = vv[i][1];
-  }
-  if (need_est)
-    for (PetscInt k = 0; k < n; k++) {
-      const PetscInt i = order[k];
-      EX[k] = ps->v_est[i][0];
-      EY[k] = ps->v_est[i][1];
-    }
-  for (PetscInt k = 0; k < n; k++) {
-    const PetscInt i = order[k];
-    IR[k] = ps->rho[i];
-    P[k] = ps->p[i];
-  }
-  if (artificial || diffusion)
-    PetscCall(PetscArraycpy(RHO, IR, n));
-  for (PetscInt k = 0; k < n; k++) { /* vectorised: the divisions eight at a time */
-    IR[k] = 1.0 / IR[k];
-    P[k] = P[k] * IR[k] * IR[k];
-  }
-  for (PetscInt k = 0; k < n; k++) {
-    const PetscInt i = order[k];
-    AX[k] = ps->a[i][0];
-    AY[k] = ps->a[i][1];
-  }
-  if (continuity)
-    for (PetscInt k = 0; k < n; k++)
-      DR[k] = ps->drho[order[k]];
-  for (PetscInt k = 0; k < n; k++)
-    w->fl[k] = (unsigned char)((c->flag[k] & (FL_NO_PAIR | FL_SOLID)) |
-                               (ps->type[order[k]] == PTYPE_WALL ? FL_WALL_NOW : 0));
   const double norm = sph_kernel_norm(sp->kernel, 2, sp->h), inv_h = 1.0 / sp->h;
   const cells_args A = {
-      .X = X,
-      .Y = Y,
-      .VX = VX,
-      .VY = VY,
-      .EX = EX,
-      .EY = EY,
-      .P = P,
-      .IR = IR,
-      .M = M,
-      .RHO = RHO,
-      .AX = AX,
-      .AY = AY,
-      .DR = DR,
-      .FL = w->fl,
-      .order = order,
       .excl = c->excl,
       .ps = ps,
       .h2 = sp->h * sp->h,
@@ -381,14 +460,31 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
       .two_dhc = 2.0 * (sp->delta * 0.5 * sp->h * sp->c0),
   };
   const int density = continuity ? (diffusion ? 2 : 1) : 0;
-  w->n_pairs =
-      csweeps[sp->kernel == SPH_KERNEL_WENDLAND][density][artificial][visc_is_est ? 1 : 0](&A, c);
-  for (PetscInt k = 0; k < n; k++) {
-    const PetscInt i = order[k];
-    ps->a[i][0] = AX[k];
-    ps->a[i][1] = AY[k];
-    if (continuity)
-      ps->drho[i] = DR[k];
+  PetscInt64 (*const sweep)(const cells_args *, const cells *, const cells_slot *, PetscInt,
+                            const cells_slot *, PetscInt, PetscInt, PetscInt) =
+      csweeps[sp->kernel == SPH_KERNEL_WENDLAND][density][artificial][visc_is_est ? 1 : 0];
+  const cells_fill_args F = {
+      .c = c,
+      .ps = ps,
+      .vv = sph_viscous_velocity(ps, visc_is_est),
+      .need_est = need_est,
+      .continuity = continuity,
+      .copy_rho = artificial || diffusion,
+  };
+  /* row cy in slot cy % 2: filled two rows ahead, swept with the row above as partners,
+   * written back, then refilled with row cy + 2 */
+  PetscInt fill_seg = 0, back_seg = 0;
+  cells_slot_fill(&F, &slot[0], c->start[0], c->start[n0], &fill_seg);
+  if (n1 > 1)
+    cells_slot_fill(&F, &slot[1], c->start[n0], c->start[2 * n0], &fill_seg);
+  w->n_pairs = 0;
+  for (PetscInt cy = 0; cy < n1; cy++) {
+    cells_slot *S = &slot[cy % 2];
+    const PetscInt first = c->start[cy * n0], last = c->start[(cy + 1) * n0];
+    w->n_pairs += sweep(&A, c, S, first, &slot[(cy + 1) % 2], last, first, last);
+    cells_slot_store(&F, S, first, last, &back_seg, continuity);
+    if (cy + 2 < n1)
+      cells_slot_fill(&F, S, c->start[(cy + 2) * n0], c->start[(cy + 3) * n0], &fill_seg);
   }
 #else
   (void)w;

@@ -9,7 +9,9 @@
  *     multiset of neighbour gids equals the brute-force one (all other owned
  *     particles within the cutoff at minimum image, walls not pairing with walls), so the
  *     candidate runs, cut by x and by the height above a row, lose no partner;
- *   - the runs lie inside the half stencil's cells and are shorter than them. */
+ *   - the runs lie inside the half stencil's cells and are shorter than them;
+ *   - the segments of consecutive rows cover the cell order exactly, each all owned or all
+ *     ghost, and none could be joined to the one before it. */
 #include <stdlib.h>
 #include "unit_common.h"
 #include "dmhs/cells.h"
@@ -18,6 +20,23 @@
 static int cmp_i64(const void *a, const void *b) {
   const PetscInt64 x = *(const PetscInt64 *)a, y = *(const PetscInt64 *)b;
   return (x > y) - (x < y);
+}
+
+/* cells.h's segments: positions [seg_pos[s], seg_pos[s + 1]) hold rows seg_row[s], +1, ...,
+ * all owned or all ghost, and as long as they can be */
+static void check_segments(const cells *c, PetscInt n_owned, PetscInt rows) {
+  assert_true(c->n_seg >= 1 && c->n_seg <= rows);
+  assert_int_equal(c->seg_pos[0], 0);
+  assert_int_equal(c->seg_pos[c->n_seg], rows);
+  for (PetscInt s = 0; s < c->n_seg; s++) {
+    const PetscInt first = c->seg_pos[s], last = c->seg_pos[s + 1];
+    assert_true(last > first);
+    for (PetscInt k = first; k < last; k++)
+      assert_int_equal(c->order[k], c->seg_row[s] + (k - first));
+    assert_true(c->seg_row[s] >= n_owned || c->seg_row[s] + (last - first) <= n_owned);
+    if (s > 0)
+      assert_true(c->order[first] != c->order[first - 1] + 1 || c->order[first] == n_owned);
+  }
 }
 
 typedef struct {
@@ -60,6 +79,7 @@ static void run_case(const cells_case *cc, uint64_t seed) {
 
   const PetscInt n = ps.n_owned, rows = n + ps.n_ghost;
   assert_int_equal(ps.n_ghost, hal.n);
+  check_segments(&cel, n, rows);
   for (PetscInt gh = 0; gh < hal.n; gh++) {
     const PetscInt row = n + gh, src = hal.source[gh];
     assert_true(src >= 0 && src < n);

@@ -137,6 +137,10 @@ static int cloud_coincident = 0;
  * ghosts and the pair list built as neighbours_rebuild does. */
 /* every 7th particle a wall (the wall-wall pairs the pair list leaves out) */
 static int cloud_walls = 0;
+/* 1: the owned rows sorted into cell order first, as neighbours_rebuild does (long runs of
+ * consecutive rows in the cell order); 2: that, with x closed (no ghosts at the ends of a row of
+ * cells, so those runs go on from one row of cells into the next) */
+static int cloud_layout = 0;
 
 static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha,
                         sph_density_kind density, unit_rng *g) {
@@ -151,7 +155,8 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
                        .density = density,
                        .av_alpha = alpha,
                        .av_beta = 2.0 * alpha};
-  s->dom = (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {PETSC_TRUE, PETSC_TRUE}};
+  s->dom =
+      (domain){.lo = {0.0, 0.0}, .hi = {0.5, 0.35}, .periodic = {cloud_layout < 2, PETSC_TRUE}};
   s->pair_cutoff = h;
   fields_reset();
   OK(fields_enable("v_visc")); /* the sweeps' viscous velocity, as with walls */
@@ -173,10 +178,12 @@ static void build_cloud(sim *s, PetscInt n, sph_kernel_kind kernel, double alpha
     s->ps.v_est[idx][0] = v[0] + unit_range(g, -0.1, 0.1); /* distinct from v_visc */
     s->ps.v_est[idx][1] = v[1] + unit_range(g, -0.1, 0.1);
   }
+  const double lo[2] = {-h, -h}, hi[2] = {0.5 + h, 0.35 + h};
+  if (cloud_layout)
+    OK(cells_sort_owned_rows(&s->ps, lo, hi, h));
   OK(halo_create(&s->hal, h, PETSC_COMM_SELF));
   OK(halo_build(&s->hal, &s->dom, NULL, &s->ps)); /* one rank: no partition needed */
   OK(cells_create(&s->cel));
-  const double lo[2] = {-h, -h}, hi[2] = {0.5 + h, 0.35 + h};
   OK(cells_build_pairs(&s->cel, &s->ps, lo, hi, h));
   const PetscInt rows = s->ps.n_owned + s->ps.n_ghost;
   OK(PetscArrayzero(s->ps.a, rows));
@@ -442,7 +449,9 @@ static void test_corrected_sweep(void **state) {
 /* The vectorised sweep over cell ranges (sph_force_cells.c) against the pair-list
  * sweep: the same bits for every kernel it covers, density form, artificial
  * viscosity, density diffusion, with walls in the cloud and one particle turned
- * into a wall after the build (the diffusion follows the current type). */
+ * into a wall after the build (the diffusion follows the current type); with the rows in
+ * any order, sorted by cell as the runs sort them, and sorted with runs of owned rows that
+ * go on from one row of cells into the next (its copy moves a row of cells at a time). */
 static void test_cells_sweep_bitwise(void **state) {
   (void)state;
   if (!sph_force_cells_available())
@@ -451,41 +460,51 @@ static void test_cells_sweep_bitwise(void **state) {
   unit_rng g = {77};
   static sim s;
   static sph_force_work work;
-  int compared = 0;
-  for (int k = 0; k < 2; k++)
-    for (int dens = 0; dens < 3; dens++)
-      for (int av = 0; av < 2; av++)
-        for (int walls = 0; walls < 2; walls++) {
-          cloud_walls = walls;
-          build_cloud(&s, 400, kernels[k], av ? 0.5 : 0.0,
-                      dens ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION, &g);
-          cloud_walls = 0;
-          sph_p.delta = dens == 2 ? 0.1 : 0.0;
-          if (walls)
-            s.ps.type[5] = PTYPE_WALL;
-          const PetscInt rows = s.ps.n_owned + s.ps.n_ghost;
-          double(*a_pairs)[2], *d_pairs;
-          OK(PetscMalloc2(rows, &a_pairs, rows, &d_pairs));
-          sph_p.sweep = SPH_SWEEP_PAIRS;
-          OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
-          OK(PetscArraycpy(a_pairs, s.ps.a, rows));
-          OK(PetscArraycpy(d_pairs, s.ps.drho, rows));
-          OK(PetscArrayzero(s.ps.a, rows));
-          OK(PetscArrayzero(s.ps.drho, rows));
-          sph_p.sweep = SPH_SWEEP_CELLS;
-          OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
-          double amax = 0;
-          for (PetscInt i = 0; i < s.ps.n_owned; i++) {
-            assert_memory_equal(s.ps.a[i], a_pairs[i], sizeof(double[2]));
-            assert_memory_equal(&s.ps.drho[i], &d_pairs[i], sizeof(double));
-            amax = fmax(amax, fabs(a_pairs[i][0]));
+  int compared = 0, crossing = 0;
+  for (int layout = 0; layout < 3; layout++)
+    for (int k = 0; k < 2; k++)
+      for (int dens = 0; dens < 3; dens++)
+        for (int av = 0; av < 2; av++)
+          for (int walls = 0; walls < 2; walls++) {
+            cloud_walls = walls;
+            cloud_layout = layout;
+            build_cloud(&s, 400, kernels[k], av ? 0.5 : 0.0,
+                        dens ? SPH_DENSITY_CONTINUITY : SPH_DENSITY_SUMMATION, &g);
+            cloud_walls = 0;
+            cloud_layout = 0;
+            sph_p.delta = dens == 2 ? 0.1 : 0.0;
+            if (walls)
+              s.ps.type[5] = PTYPE_WALL;
+            /* a run of consecutive rows across the end of a row of cells */
+            for (PetscInt seg = 0; seg < s.cel.n_seg; seg++)
+              for (PetscInt cy = 1; cy < s.cel.n[1]; cy++) {
+                const PetscInt edge = s.cel.start[cy * s.cel.n[0]];
+                crossing += s.cel.seg_pos[seg] < edge && s.cel.seg_pos[seg + 1] > edge;
+              }
+            const PetscInt rows = s.ps.n_owned + s.ps.n_ghost;
+            double(*a_pairs)[2], *d_pairs;
+            OK(PetscMalloc2(rows, &a_pairs, rows, &d_pairs));
+            sph_p.sweep = SPH_SWEEP_PAIRS;
+            OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
+            OK(PetscArraycpy(a_pairs, s.ps.a, rows));
+            OK(PetscArraycpy(d_pairs, s.ps.drho, rows));
+            OK(PetscArrayzero(s.ps.a, rows));
+            OK(PetscArrayzero(s.ps.drho, rows));
+            sph_p.sweep = SPH_SWEEP_CELLS;
+            OK(sph_force_compute(&s, &sph_p, &work, NULL, NULL));
+            double amax = 0;
+            for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+              assert_memory_equal(s.ps.a[i], a_pairs[i], sizeof(double[2]));
+              assert_memory_equal(&s.ps.drho[i], &d_pairs[i], sizeof(double));
+              amax = fmax(amax, fabs(a_pairs[i][0]));
+            }
+            assert_true(amax > 0);
+            compared++;
+            OK(PetscFree2(a_pairs, d_pairs));
+            destroy_cloud(&s);
           }
-          assert_true(amax > 0);
-          compared++;
-          OK(PetscFree2(a_pairs, d_pairs));
-          destroy_cloud(&s);
-        }
-  assert_int_equal(compared, 24);
+  assert_int_equal(compared, 72);
+  assert_true(crossing > 0);
   if (work.cells)
     OK(sph_cells_work_destroy(work.cells));
   OK(PetscFree(work.cells));
