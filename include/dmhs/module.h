@@ -15,14 +15,18 @@ struct checkpoint_io;
  * What a module asks the integrator to advance besides x and v, set by its options pass:
  * MODULE_INTEGRATES_DENSITY: its compute adds density rates drho (continuity), and rho
  * follows them; MODULE_PREDICTS_DENSITY: its forces want to see rho^n + dt drho^n,
- * corrected to the trapezoid after them (integrate.c), not the half-step density. */
+ * corrected to the trapezoid after them (integrate.c), not the half-step density.
+ * MODULE_SETS_RATES, set by the module's setup: its compute sets a and drho of every owned
+ * row instead of adding to them when it is the first module of a force evaluation (it reads
+ * sim's rates_unset), so that evaluation need not zero them first (sim.c). */
 enum {
   MODULE_NEEDS_PAIRS = 1u << 0,
   MODULE_NEEDS_BONDS = 1u << 1,
   MODULE_NEEDS_ANGLES = 1u << 2,
   MODULE_CELLS_ONLY = 1u << 3,
   MODULE_INTEGRATES_DENSITY = 1u << 4,
-  MODULE_PREDICTS_DENSITY = 1u << 5
+  MODULE_PREDICTS_DENSITY = 1u << 5,
+  MODULE_SETS_RATES = 1u << 6
 };
 
 typedef struct module module;

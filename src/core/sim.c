@@ -26,10 +26,21 @@ PetscErrorCode sim_add_module_forces(sim *s, module_filter keep) {
 PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep) {
   particles *ps = &s->ps;
   const PetscInt n = ps->n_owned + ps->n_ghost;
+  const module *first = NULL;
   PetscFunctionBeginUser;
-  PetscCall(PetscArrayzero(ps->a, n));
-  if (ps->drho) /* runs without liquid have no density rates */
-    PetscCall(PetscArrayzero(ps->drho, n));
+  for (int m = 0; m < s->n_modules && !first; m++)
+    if (!keep || keep(s->modules[m]))
+      first = s->modules[m];
+  /* a pass over the rates fewer, when the first module writes them all anyway */
+  if (first && (first->needs & MODULE_SETS_RATES))
+    s->rates_unset = PETSC_TRUE;
+  else {
+    PetscCall(PetscArrayzero(ps->a, n));
+    if (ps->drho) /* runs without liquid have no density rates */
+      PetscCall(PetscArrayzero(ps->drho, n));
+  }
   PetscCall(sim_add_module_forces(s, keep));
+  PetscCheck(!s->rates_unset, s->comm, PETSC_ERR_PLIB,
+             "module %s says it sets the rates (MODULE_SETS_RATES) but did not", first->name);
   PetscFunctionReturn(0);
 }

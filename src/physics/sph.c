@@ -196,6 +196,11 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
   if (sph_force_cells_applies(sp) && !d->has_walls && sp->tensile_eps == 0 &&
       sp->density == SPH_DENSITY_CONTINUITY && !fields_enabled("stress_xx"))
     self->needs |= MODULE_CELLS_ONLY;
+  /* the cells sweep writes every owned row's a and drho back: when it comes first in an
+   * evaluation it starts its sums from zero itself (nothing else in sph_compute adds to
+   * them before it: the EOS and the wall pass write rho, p and v_visc) */
+  if (sph_force_cells_applies(sp) && sp->density == SPH_DENSITY_CONTINUITY)
+    self->needs |= MODULE_SETS_RATES;
   PetscFunctionReturn(0);
 }
 

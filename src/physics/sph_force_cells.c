@@ -342,6 +342,7 @@ typedef struct {
   particles *ps;
   const double (*vv)[2]; /* the viscous term's velocity (sph_viscous_velocity) */
   int need_est, continuity, copy_rho;
+  int zero_sums; /* a and drho hold nothing yet (sim's rates_unset): the sums start at 0 */
 } cells_fill_args;
 
 /* The next segment (cells.h) that reaches past `first`, from *seg on: the copies visit the
@@ -358,6 +359,12 @@ static void cells_slot_fill(const cells_fill_args *F, cells_slot *S, PetscInt fi
   const cells *c = F->c;
   const particles *ps = F->ps;
   S->order = c->order + first;
+  if (F->zero_sums) {
+    memset(S->AX, 0, (size_t)(last - first) * sizeof(double));
+    memset(S->AY, 0, (size_t)(last - first) * sizeof(double));
+    if (F->continuity)
+      memset(S->DR, 0, (size_t)(last - first) * sizeof(double));
+  }
   for (PetscInt g = cells_segment_from(c, first, seg); g < c->n_seg && c->seg_pos[g] < last; g++) {
     const PetscInt k0 = PetscMax(c->seg_pos[g], first), k1 = PetscMin(c->seg_pos[g + 1], last);
     const PetscInt i0 = c->seg_row[g] + (k0 - c->seg_pos[g]), t0 = k0 - first, len = k1 - k0;
@@ -365,12 +372,13 @@ static void cells_slot_fill(const cells_fill_args *F, cells_slot *S, PetscInt fi
     cells_copy_pair(S->VX + t0, S->VY + t0, F->vv[i0], len);
     if (F->need_est)
       cells_copy_pair(S->EX + t0, S->EY + t0, ps->v_est[i0], len);
-    cells_copy_pair(S->AX + t0, S->AY + t0, ps->a[i0], len);
+    if (!F->zero_sums)
+      cells_copy_pair(S->AX + t0, S->AY + t0, ps->a[i0], len);
     cells_copy_scalars(S->M + t0, S->IR + t0, S->P + t0, ps->mass + i0, ps->rho + i0, ps->p + i0,
                        len);
     if (F->copy_rho)
       memcpy(S->RHO + t0, ps->rho + i0, (size_t)len * sizeof(double));
-    if (F->continuity)
+    if (F->continuity && !F->zero_sums)
       memcpy(S->DR + t0, ps->drho + i0, (size_t)len * sizeof(double));
     cells_copy_flags(S->FL + t0, c->flag + k0, ps->type + i0, len);
   }
@@ -470,7 +478,9 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
       .need_est = need_est,
       .continuity = continuity,
       .copy_rho = artificial || diffusion,
+      .zero_sums = s->rates_unset,
   };
+  s->rates_unset = PETSC_FALSE; /* set now, for every owned row (cells_slot_store) */
   /* row cy in slot cy % 2: filled two rows ahead, swept with the row above as partners,
    * written back, then refilled with row cy + 2 */
   PetscInt fill_seg = 0, back_seg = 0;

@@ -17,7 +17,10 @@
  *     only (a solid's or a wall's larger |a| does not count);
  *   - the two phases of a force evaluation (sim_add_module_forces): a module
  *     enabled before body_force reads, during its compute, the body force at
- *     the evaluation's own time, not the previous evaluation's. */
+ *     the evaluation's own time, not the previous evaluation's;
+ *   - a first module that sets the rates itself (MODULE_SETS_RATES): the evaluation does not
+ *     zero a for it and body_force adds after it; with that module filtered out, a is zeroed
+ *     as usual; one that says so and does not set them is an error. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
@@ -248,6 +251,69 @@ static void test_prepare_before_compute(void **state) {
   s.modules[0] = sph;
 }
 
+/* A module that says it sets the rates: it adds (5, 6) to a, so that a zeroing pass before
+ * it would show, and clears rates_unset when setter_sets. */
+static PetscBool setter_sets, setter_saw_unset;
+static int setter_calls;
+static PetscErrorCode setter_compute(module *self, sim *sim_) {
+  (void)self;
+  setter_calls++;
+  setter_saw_unset = sim_->rates_unset;
+  for (PetscInt i = 0; i < sim_->ps.n_owned; i++) {
+    sim_->ps.a[i][0] += 5.0;
+    sim_->ps.a[i][1] += 6.0;
+  }
+  if (setter_sets)
+    sim_->rates_unset = PETSC_FALSE;
+  return 0;
+}
+static module setter = {.name = "setter", .needs = MODULE_SETS_RATES, .compute = setter_compute};
+static PetscBool not_setter(const module *mod) {
+  return mod != &setter ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static void fill_a(double ax, double ay) {
+  for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+    s.ps.a[i][0] = ax;
+    s.ps.a[i][1] = ay;
+  }
+}
+
+static void test_first_module_sets_rates(void **state) {
+  (void)state;
+  OK(PetscOptionsInsertString(NULL, "-body_force 1,0 -gravity 0")); /* on the liquid only */
+  OK(m->set_from_options(m, &s));
+  s.modules[0] = &setter;
+  setter_sets = PETSC_TRUE;
+  fill_a(1.0, 2.0);
+  OK(sim_compute_module_forces(&s, NULL));
+  assert_true(setter_saw_unset && !s.rates_unset);
+  assert_accel(PTYPE_FLUID, 1.0 + 5.0 + 1.0, 2.0 + 6.0, 0.0); /* not zeroed, then added to */
+  assert_accel(PTYPE_WALL, 6.0, 8.0, 0.0);
+  /* the setter filtered out: the evaluation zeroes a, body_force adds */
+  setter_calls = 0;
+  fill_a(1.0, 2.0);
+  OK(sim_compute_module_forces(&s, not_setter));
+  assert_int_equal(setter_calls, 0);
+  assert_false(s.rates_unset);
+  assert_accel(PTYPE_FLUID, 1.0, 0.0, 0.0);
+  assert_accel(PTYPE_WALL, 0.0, 0.0, 0.0);
+  /* body_force first: zeroed, and the setter after it adds without being told to set */
+  s.modules[0] = m;
+  s.modules[1] = &setter;
+  fill_a(1.0, 2.0);
+  OK(sim_compute_module_forces(&s, NULL));
+  assert_false(setter_saw_unset);
+  assert_accel(PTYPE_FLUID, 1.0 + 5.0, 6.0, 0.0);
+  s.modules[0] = &setter;
+  s.modules[1] = m;
+  /* says so, does not */
+  setter_sets = PETSC_FALSE;
+  assert_int_equal(sim_compute_module_forces(&s, NULL), PETSC_ERR_PLIB);
+  s.rates_unset = PETSC_FALSE;
+  s.modules[0] = sph;
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(test_constant_with_gravity, setup, teardown),
@@ -259,6 +325,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_sph_speed_scans, setup, teardown),
       cmocka_unit_test_setup_teardown(test_max_dt, setup, teardown),
       cmocka_unit_test_setup_teardown(test_prepare_before_compute, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_first_module_sets_rates, setup, teardown),
   };
   return cmocka_run_group_tests(tests, unit_petsc_setup, unit_petsc_teardown);
 }
