@@ -50,7 +50,7 @@ typedef struct sim {
   double list_cutoff; /* pair_cutoff + skin: the pair list's radius */
   PetscInt n_rebuilds;
   PetscBool force_rebuild; /* a module changed the structure (post_step): the next step rebuilds */
-  /* a and drho of the rows hold nothing yet: the evaluation's first module sets them
+  /* a and drho of the owned rows hold nothing yet: the evaluation's first module sets them
    * (MODULE_SETS_RATES) and clears this; every other compute adds to them */
   PetscBool rates_unset;
   /* what a step refreshes on ghosts between builds: the union of the modules' ghost_reads,
@@ -85,8 +85,8 @@ module *sim_find_module(const sim *s, const char *name);
 /* Which modules a force evaluation runs: those for which it is true. */
 typedef PetscBool (*module_filter)(const module *m);
 /* Zeroes a and drho of the owned and ghost rows, then sim_add_module_forces. When the first
- * module it runs sets them itself (MODULE_SETS_RATES) the zeroing is left to it: the ghost
- * rows' are then left as they were (no one reads them: their sums are dropped). */
+ * module it runs sets the owned rows' itself (MODULE_SETS_RATES), only the ghost rows' are
+ * zeroed and sim's rates_unset tells that module to start from zero. */
 PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep);
 /* The two phases of a force evaluation over the enabled modules keep accepts (NULL: all):
  * every prepare, then every compute, each in the order the modules were enabled; the

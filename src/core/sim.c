@@ -31,10 +31,14 @@ PetscErrorCode sim_compute_module_forces(sim *s, module_filter keep) {
   for (int m = 0; m < s->n_modules && !first; m++)
     if (!keep || keep(s->modules[m]))
       first = s->modules[m];
-  /* a pass over the rates fewer, when the first module writes them all anyway */
-  if (first && (first->needs & MODULE_SETS_RATES))
+  /* a pass over the owned rows' rates fewer, when the first module writes them all anyway;
+   * the ghost rows' (a few, summed into by pair sweeps and then dropped) still start at 0 */
+  if (first && (first->needs & MODULE_SETS_RATES)) {
     s->rates_unset = PETSC_TRUE;
-  else {
+    PetscCall(PetscArrayzero(ps->a + ps->n_owned, ps->n_ghost));
+    if (ps->drho)
+      PetscCall(PetscArrayzero(ps->drho + ps->n_owned, ps->n_ghost));
+  } else {
     PetscCall(PetscArrayzero(ps->a, n));
     if (ps->drho) /* runs without liquid have no density rates */
       PetscCall(PetscArrayzero(ps->drho, n));

@@ -19,8 +19,8 @@
  *     enabled before body_force reads, during its compute, the body force at
  *     the evaluation's own time, not the previous evaluation's;
  *   - a first module that sets the rates itself (MODULE_SETS_RATES): the evaluation does not
- *     zero a for it and body_force adds after it; with that module filtered out, a is zeroed
- *     as usual; one that says so and does not set them is an error. */
+ *     zero the owned rows' a for it (the ghost rows' still) and body_force adds after it; with that
+ * module filtered out, a is zeroed as usual; one that says so and does not set them is an error. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
@@ -273,7 +273,7 @@ static PetscBool not_setter(const module *mod) {
 }
 
 static void fill_a(double ax, double ay) {
-  for (PetscInt i = 0; i < s.ps.n_owned; i++) {
+  for (PetscInt i = 0; i < s.ps.n_owned + s.ps.n_ghost; i++) {
     s.ps.a[i][0] = ax;
     s.ps.a[i][1] = ay;
   }
@@ -285,11 +285,15 @@ static void test_first_module_sets_rates(void **state) {
   OK(m->set_from_options(m, &s));
   s.modules[0] = &setter;
   setter_sets = PETSC_TRUE;
+  const PetscInt ghost = s.ps.n_owned - 1; /* the last row made a ghost */
+  s.ps.n_owned--;
+  s.ps.n_ghost = 1;
   fill_a(1.0, 2.0);
   OK(sim_compute_module_forces(&s, NULL));
   assert_true(setter_saw_unset && !s.rates_unset);
   assert_accel(PTYPE_FLUID, 1.0 + 5.0 + 1.0, 2.0 + 6.0, 0.0); /* not zeroed, then added to */
   assert_accel(PTYPE_WALL, 6.0, 8.0, 0.0);
+  assert_accel((int)ghost, 0.0, 0.0, 0.0); /* the ghost rows still start at 0 */
   /* the setter filtered out: the evaluation zeroes a, body_force adds */
   setter_calls = 0;
   fill_a(1.0, 2.0);
@@ -312,6 +316,8 @@ static void test_first_module_sets_rates(void **state) {
   assert_int_equal(sim_compute_module_forces(&s, NULL), PETSC_ERR_PLIB);
   s.rates_unset = PETSC_FALSE;
   s.modules[0] = sph;
+  s.ps.n_owned++;
+  s.ps.n_ghost = 0;
 }
 
 int main(void) {
