@@ -121,12 +121,16 @@ static void cells_cut_runs(cells *c, const particles *ps, double inv_height) {
 
 /* The segments of consecutive rows in the cell order (cells.h), split where the owned rows
  * end so that a segment is all owned or all ghost. */
+static inline PetscBool cells_segment_starts(const PetscInt *order, PetscInt a, PetscInt n_owned) {
+  return a == 0 || order[a] != order[a - 1] + 1 || order[a] == n_owned ? PETSC_TRUE : PETSC_FALSE;
+}
+
 static PetscErrorCode cells_find_segments(cells *c, PetscInt n, PetscInt n_owned) {
   const PetscInt *order = c->order;
   PetscFunctionBeginUser;
-  PetscInt n_seg = n > 0 ? 1 : 0;
-  for (PetscInt a = 1; a < n; a++)
-    n_seg += order[a] != order[a - 1] + 1 || order[a] == n_owned;
+  PetscInt n_seg = 0;
+  for (PetscInt a = 0; a < n; a++)
+    n_seg += cells_segment_starts(order, a, n_owned);
   if (n_seg + 1 > c->n_alloc_seg) {
     PetscCall(PetscFree2(c->seg_pos, c->seg_row));
     c->n_alloc_seg = n_seg + n_seg / 4 + 1;
@@ -134,7 +138,7 @@ static PetscErrorCode cells_find_segments(cells *c, PetscInt n, PetscInt n_owned
   }
   PetscInt s = 0;
   for (PetscInt a = 0; a < n; a++)
-    if (a == 0 || order[a] != order[a - 1] + 1 || order[a] == n_owned) {
+    if (cells_segment_starts(order, a, n_owned)) {
       c->seg_pos[s] = a;
       c->seg_row[s++] = order[a];
     }

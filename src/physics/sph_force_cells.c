@@ -284,12 +284,13 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
   o->pairs = pairs;
 }
 
-/* The particles at cell-order positions [first, last), one row of cells held in slot S from
- * position base_s on; their upper partners are in slot T, the row above, from base_t on. */
+/* The particles of one row of cells, cell-order positions [first, last), held in slot S; their
+ * upper partners are in slot T, which holds the row above (from position last on). */
 SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int artificial,
                                   int diffusion, int same_v, const cells_args *A, const cells *c,
-                                  const cells_slot *S, PetscInt base_s, const cells_slot *T,
-                                  PetscInt base_t, PetscInt first, PetscInt last) {
+                                  const cells_slot *S, const cells_slot *T, PetscInt first,
+                                  PetscInt last) {
+  const PetscInt base_s = first, base_t = last;
   const PetscInt *restrict end1 = c->run_end1, *restrict first2 = c->run_first2,
                            *restrict last2 = c->run_last2;
   own_sums o;
@@ -316,9 +317,8 @@ SPH_INLINE PetscInt64 cells_sweep(sph_kernel_kind kernel, int continuity, int ar
 
 #define CSWEEP1(name, K, C, AV, D, V)                                                              \
   static PetscInt64 name(const cells_args *A, const cells *c, const cells_slot *S,                 \
-                         PetscInt base_s, const cells_slot *T, PetscInt base_t, PetscInt first,    \
-                         PetscInt last) {                                                          \
-    return cells_sweep(K, C, AV, D, V, A, c, S, base_s, T, base_t, first, last);                   \
+                         const cells_slot *T, PetscInt first, PetscInt last) {                     \
+    return cells_sweep(K, C, AV, D, V, A, c, S, T, first, last);                                   \
   }
 /* each combination with v_est read apart from v_visc (walls) and as one (no walls) */
 #define CSWEEP(name, K, C, AV, D) CSWEEP1(name, K, C, AV, D, 0) CSWEEP1(name##_v, K, C, AV, D, 1)
@@ -329,8 +329,8 @@ SPH_SWEEP_VARIANTS(CSWEEP, csweep_wendland, SPH_KERNEL_WENDLAND)
 #define CPAIR(name)                                                                                \
   { name, name##_v }
 static PetscInt64 (*const csweeps[2][3][2][2])(const cells_args *, const cells *,
-                                               const cells_slot *, PetscInt, const cells_slot *,
-                                               PetscInt, PetscInt, PetscInt) = {
+                                               const cells_slot *, const cells_slot *, PetscInt,
+                                               PetscInt) = {
     SPH_SWEEP_ROW(CPAIR, csweep_lucy),
     SPH_SWEEP_ROW(CPAIR, csweep_wendland),
 };
@@ -387,7 +387,7 @@ static void cells_slot_fill(const cells_fill_args *F, cells_slot *S, PetscInt fi
 /* The sums of positions [first, last) from slot S back to their rows: the owned rows only,
  * the ghosts' sums are dropped (no reverse communication, doc/parallel.md). */
 static void cells_slot_store(const cells_fill_args *F, const cells_slot *S, PetscInt first,
-                             PetscInt last, PetscInt *seg, int continuity) {
+                             PetscInt last, PetscInt *seg) {
   const cells *c = F->c;
   particles *ps = F->ps;
   for (PetscInt g = cells_segment_from(c, first, seg); g < c->n_seg && c->seg_pos[g] < last; g++) {
@@ -396,7 +396,7 @@ static void cells_slot_store(const cells_fill_args *F, const cells_slot *S, Pets
     const PetscInt k0 = PetscMax(c->seg_pos[g], first), k1 = PetscMin(c->seg_pos[g + 1], last);
     const PetscInt i0 = c->seg_row[g] + (k0 - c->seg_pos[g]), t0 = k0 - first, len = k1 - k0;
     cells_store_pair(ps->a[i0], S->AX + t0, S->AY + t0, len);
-    if (continuity)
+    if (F->continuity)
       memcpy(ps->drho + i0, S->DR + t0, (size_t)len * sizeof(double));
   }
 }
@@ -468,8 +468,8 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
       .two_dhc = 2.0 * (sp->delta * 0.5 * sp->h * sp->c0),
   };
   const int density = continuity ? (diffusion ? 2 : 1) : 0;
-  PetscInt64 (*const sweep)(const cells_args *, const cells *, const cells_slot *, PetscInt,
-                            const cells_slot *, PetscInt, PetscInt, PetscInt) =
+  PetscInt64 (*const sweep)(const cells_args *, const cells *, const cells_slot *,
+                            const cells_slot *, PetscInt, PetscInt) =
       csweeps[sp->kernel == SPH_KERNEL_WENDLAND][density][artificial][visc_is_est ? 1 : 0];
   const cells_fill_args F = {
       .c = c,
@@ -491,8 +491,8 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
   for (PetscInt cy = 0; cy < n1; cy++) {
     cells_slot *S = &slot[cy % 2];
     const PetscInt first = c->start[cy * n0], last = c->start[(cy + 1) * n0];
-    w->n_pairs += sweep(&A, c, S, first, &slot[(cy + 1) % 2], last, first, last);
-    cells_slot_store(&F, S, first, last, &back_seg, continuity);
+    w->n_pairs += sweep(&A, c, S, &slot[(cy + 1) % 2], first, last);
+    cells_slot_store(&F, S, first, last, &back_seg);
     if (cy + 2 < n1)
       cells_slot_fill(&F, S, c->start[(cy + 2) * n0], c->start[(cy + 3) * n0], &fill_seg);
   }
