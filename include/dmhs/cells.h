@@ -10,8 +10,9 @@ typedef struct cells {
   double lo[DMHS_DIM]; /* lower corner of the covered region (box minus ghost width) */
   double size;         /* cell edge >= cutoff */
   PetscInt n[DMHS_DIM];
-  PetscInt *start; /* n cells + 1 offsets into order */
-  PetscInt *order; /* particle indices sorted by cell */
+  PetscInt *start;    /* n cells + 1 offsets into order */
+  PetscInt *order;    /* particle indices sorted by cell */
+  PetscInt *position; /* per row, its position in order: which of a pair's rows comes first */
   PetscInt *cell_of;
   PetscInt n_alloc_cells, n_alloc_particles;
   double (*xs)[DMHS_DIM]; /* positions in cell order (scratch) */

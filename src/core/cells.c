@@ -20,7 +20,7 @@ PetscErrorCode cells_create(cells *c) {
 
 PetscErrorCode cells_destroy(cells *c) {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree3(c->start, c->order, c->cell_of));
+  PetscCall(PetscFree4(c->start, c->order, c->position, c->cell_of));
   PetscCall(PetscFree2(c->pair_i, c->pair_j));
   PetscCall(PetscFree(c->xs));
   PetscCall(PetscFree(c->flag));
@@ -33,11 +33,11 @@ PetscErrorCode cells_destroy(cells *c) {
 static PetscErrorCode cells_ensure(cells *c, PetscInt n_cells, PetscInt n_particles) {
   PetscFunctionBeginUser;
   if (n_cells + 1 > c->n_alloc_cells || n_particles > c->n_alloc_particles) {
-    PetscCall(PetscFree3(c->start, c->order, c->cell_of));
+    PetscCall(PetscFree4(c->start, c->order, c->position, c->cell_of));
     c->n_alloc_cells = PetscMax(n_cells + 1, c->n_alloc_cells);
     c->n_alloc_particles = PetscMax(n_particles + n_particles / 4, c->n_alloc_particles);
-    PetscCall(PetscMalloc3(c->n_alloc_cells, &c->start, c->n_alloc_particles, &c->order,
-                           c->n_alloc_particles, &c->cell_of));
+    PetscCall(PetscMalloc4(c->n_alloc_cells, &c->start, c->n_alloc_particles, &c->order,
+                           c->n_alloc_particles, &c->position, c->n_alloc_particles, &c->cell_of));
   }
   PetscFunctionReturn(0);
 }
@@ -188,6 +188,8 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
         c->order[b] = c->order[b - 1];
       c->order[b] = row;
     }
+  for (PetscInt a = 0; a < n; a++)
+    c->position[c->order[a]] = a;
 
   /* positions and flags gathered in cell order: the search below then walks
    * contiguous memory instead of jumping through order[] */

@@ -13,6 +13,7 @@
 typedef struct {
   PetscInt n_pairs;
   const PetscInt *restrict pi, *restrict pj;
+  const PetscInt *restrict position; /* per row, its place in the cell order (cells.h) */
   const double (*restrict x)[2], (*restrict v_est)[2], (*restrict v_visc)[2];
   const double *restrict mass, *restrict rho;
   const double *restrict P, *restrict inv_rho; /* p/rho^2 and 1/rho per particle */
@@ -79,6 +80,13 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       }
     }
     inside++;
+    /* Each pair's sums as the cells sweep (sph_force_cells.c) adds them: the row that comes
+     * first in the cell order adds m T to its own sums, the other has m T subtracted in one
+     * fused multiply-add (a single rounding: the vectorised sweep's partner update, one
+     * instruction instead of two). The two round differently, so which row is which follows
+     * the cell order, which is the same on every rank count (cells.h), and not the pair
+     * list's i < j of local rows, which is not. Corrected sweeps keep both sides unfused. */
+    const int i_first = A->position[i] < A->position[j];
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
     double T[2] = {0.0, 0.0}; /* antisymmetric: a_i += m_j T, a_j -= m_i T */
     if (corrected) {
@@ -104,24 +112,49 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       if (continuity) {
         if (!corrected) { /* else -rho_i div_i per particle (sph_force_compute) */
           const double q = sph_continuity_iact(rij, grad, vij);
-          drho[i] += mass[j] * q;
-          drho[j] += mass[i] * q;
+          if (i_first) {
+            drho[i] += mass[j] * q;
+            drho[j] = fma(mass[i], q, drho[j]);
+          } else {
+            drho[j] += mass[i] * q;
+            drho[i] = fma(mass[j], q, drho[i]);
+          }
         }
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
         if (diffusion && A->type[i] != PTYPE_WALL && A->type[j] != PTYPE_WALL) {
           const double D = sph_density_diffusion_iact(grad, rho[i], rho[j], A->delta_hs_c0);
-          drho[i] += mass[j] * inv_rho[j] * D;
-          drho[j] -= mass[i] * inv_rho[i] * D;
+          if (corrected) {
+            drho[i] += mass[j] * inv_rho[j] * D;
+            drho[j] -= mass[i] * inv_rho[i] * D;
+          } else if (i_first) {
+            drho[i] += mass[j] * inv_rho[j] * D;
+            drho[j] = fma(-(mass[i] * inv_rho[i]), D, drho[j]);
+          } else {
+            drho[j] -= mass[i] * inv_rho[i] * D;
+            drho[i] = fma(mass[j] * inv_rho[j], D, drho[i]);
+          }
         }
       }
     }
     /* ghost rows receive contributions too; they are discarded (Newton's third
      * law inside a rank only), which keeps the loop free of branches */
-    if (!corrected || artificial) { /* T holds the antisymmetric terms */
+    if (corrected && artificial) { /* T holds the antisymmetric terms */
       a[i][0] += mass[j] * T[0];
       a[i][1] += mass[j] * T[1];
       a[j][0] -= mass[i] * T[0];
       a[j][1] -= mass[i] * T[1];
+    } else if (!corrected) {
+      if (i_first) {
+        a[i][0] += mass[j] * T[0];
+        a[i][1] += mass[j] * T[1];
+        a[j][0] = fma(-mass[i], T[0], a[j][0]);
+        a[j][1] = fma(-mass[i], T[1], a[j][1]);
+      } else {
+        a[j][0] -= mass[i] * T[0];
+        a[j][1] -= mass[i] * T[1];
+        a[i][0] = fma(mass[j], T[0], a[i][0]);
+        a[i][1] = fma(mass[j], T[1], a[i][1]);
+      }
     }
   }
   return inside;
@@ -185,6 +218,7 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
       .n_pairs = s->cel.n_pairs,
       .pi = s->cel.pair_i,
       .pj = s->cel.pair_j,
+      .position = s->cel.position,
       .x = (const double(*)[2])ps->x,
       .v_est = (const double(*)[2])ps->v_est,
       .v_visc = sph_viscous_velocity(ps, work->visc_is_est),

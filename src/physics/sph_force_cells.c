@@ -19,7 +19,9 @@
  * stores. The particle's own sums are added in the order of its partners (the
  * lanes in use are compressed into a buffer and added one by one), which keeps
  * the order of every sum as in the pair list: bitwise the same results, on any
- * rank count (doc/parallel.md).
+ * rank count (doc/parallel.md). The partners' sums take each term in one fused
+ * multiply-add, and so does the pair list's update of the row that comes second in
+ * the cell order (sph_force.c).
  *
  * Applies when the build has AVX-512 and the sweep is uncorrected, with the Lucy
  * or Wendland kernel (sph_force_cells_applies); otherwise sph_force.c's
@@ -242,19 +244,18 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
         T1 = _mm512_mask_sub_pd(T1, approaching, T1, _mm512_mul_pd(pgav, dy));
       }
     }
-    /* the partners' sums, in place */
+    /* the partners' sums, in place, each with one rounding (fused multiply-adds: the pair
+     * list's partner update, sph_force.c) */
     double *AX = T->AX + b, *AY = T->AY + b;
-    _mm512_mask_storeu_pd(AX, m,
-                          _mm512_sub_pd(_mm512_maskz_loadu_pd(m, AX), _mm512_mul_pd(Ma, T0)));
-    _mm512_mask_storeu_pd(AY, m,
-                          _mm512_sub_pd(_mm512_maskz_loadu_pd(m, AY), _mm512_mul_pd(Ma, T1)));
+    _mm512_mask_storeu_pd(AX, m, _mm512_fnmadd_pd(Ma, T0, _mm512_maskz_loadu_pd(m, AX)));
+    _mm512_mask_storeu_pd(AY, m, _mm512_fnmadd_pd(Ma, T1, _mm512_maskz_loadu_pd(m, AY)));
     /* a's own, buffered in partner order */
     _mm512_storeu_pd(o->x + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T0)));
     _mm512_storeu_pd(o->y + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, T1)));
     if (continuity) {
       const __m512d q = _mm512_mul_pd(grad, vr);
       double *DR = T->DR + b;
-      __m512d dr = _mm512_add_pd(_mm512_maskz_loadu_pd(m, DR), _mm512_mul_pd(Ma, q));
+      __m512d dr = _mm512_fmadd_pd(Ma, q, _mm512_maskz_loadu_pd(m, DR));
       _mm512_storeu_pd(o->q + n_buf, _mm512_maskz_compress_pd(m, _mm512_mul_pd(Mb, q)));
       if (diffusion) {
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
@@ -263,7 +264,7 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
         const __m512d D =
             _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(A->two_dhc), _mm512_sub_pd(RHOb, RHOa)),
                           _mm512_xor_pd(grad, sign));
-        dr = _mm512_mask_sub_pd(dr, md, dr, _mm512_mul_pd(MIRa, D));
+        dr = _mm512_mask3_fnmadd_pd(MIRa, D, dr, md);
         /* a's diffusion term rides with its continuity term, compressed by m like
          * it so that the buffers stay aligned: 0 where md is off, and adding 0 leaves
          * a sum's bits as the pair-list sweep that skips the term */
