@@ -82,6 +82,25 @@ static void integrate_density_mode(const sim *s, int *continuity, int *predict) 
   *predict = *continuity && (needs & MODULE_PREDICTS_DENSITY) != 0;
 }
 
+/* The first kick and the drift over the rows' components; subcycled (a constant) freezes the
+ * solids (their motion belongs to the sub-steps). Selects instead of branches, so that the loop
+ * vectorises: a wall keeps its prescribed velocity (v_est = v) and drifts; a frozen solid keeps
+ * x, v and v_est (its density belongs to the liquid's step). */
+static inline void integrate_kick_drift(particles *ps, double dt, double half, int subcycled) {
+  const PetscInt *restrict type = ps->type;
+  double *restrict x = &ps->x[0][0], *restrict v = &ps->v[0][0], *restrict v_est = &ps->v_est[0][0];
+  const double *restrict a = &ps->a[0][0];
+  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
+    const PetscInt t = type[j / DMHS_DIM];
+    const int wall = t == PTYPE_WALL, frozen = subcycled && t == PTYPE_SOLID;
+    const double vj = v[j], v_new = wall || frozen ? vj : vj + half * a[j];
+    const double est = wall ? vj : vj + dt * a[j];
+    v_est[j] = subcycled && frozen ? v_est[j] : est;
+    v[j] = v_new;
+    x[j] = subcycled && frozen ? x[j] : x[j] + dt * v_new;
+  }
+}
+
 PetscErrorCode integrate_first_half(sim *s) {
   particles *ps = &s->ps;
   const double dt = s->dt, half = 0.5 * s->dt;
@@ -90,20 +109,10 @@ PetscErrorCode integrate_first_half(sim *s) {
   const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  /* selects instead of branches, so that the loop vectorises: a wall keeps its prescribed
-   * velocity (v_est = v) and drifts; a sub-cycled solid keeps x, v and v_est (its motion
-   * belongs to the sub-steps, its density to the liquid's step) */
-  const PetscInt *restrict type = ps->type;
-  double *restrict x = &ps->x[0][0], *restrict v = &ps->v[0][0], *restrict v_est = &ps->v_est[0][0];
-  const double *restrict a = &ps->a[0][0];
-  for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
-    const PetscInt t = type[j / DMHS_DIM];
-    const int wall = t == PTYPE_WALL, frozen = subcycled && t == PTYPE_SOLID;
-    const double vj = v[j], v_new = wall || frozen ? vj : vj + half * a[j];
-    v_est[j] = frozen ? v_est[j] : (wall ? vj : vj + dt * a[j]);
-    v[j] = v_new;
-    x[j] = frozen ? x[j] : x[j] + dt * v_new;
-  }
+  if (subcycled)
+    integrate_kick_drift(ps, dt, half, 1);
+  else /* nothing frozen: the loop neither reads v_est nor keeps x */
+    integrate_kick_drift(ps, dt, half, 0);
   if (continuity) /* walls' densities are the wall pass's (sph_wall.c) */
     integrate_density_first(ps, dt, predict);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
