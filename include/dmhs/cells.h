@@ -13,7 +13,6 @@ typedef struct cells {
   PetscInt *start;    /* n cells + 1 offsets into order */
   PetscInt *order;    /* particle indices sorted by cell */
   PetscInt *position; /* per row, its position in order: which of a pair's rows comes first */
-  PetscInt *cell_of;
   PetscInt n_alloc_cells, n_alloc_particles;
   double (*xs)[DMHS_DIM]; /* positions in cell order (scratch) */
   unsigned char *flag;    /* per sorted row: 1 = ghost, 2 = wall, 4 = not liquid (scratch) */

@@ -20,7 +20,7 @@ PetscErrorCode cells_create(cells *c) {
 
 PetscErrorCode cells_destroy(cells *c) {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree4(c->start, c->order, c->position, c->cell_of));
+  PetscCall(PetscFree3(c->start, c->order, c->position));
   PetscCall(PetscFree2(c->pair_i, c->pair_j));
   PetscCall(PetscFree(c->xs));
   PetscCall(PetscFree(c->flag));
@@ -33,11 +33,11 @@ PetscErrorCode cells_destroy(cells *c) {
 static PetscErrorCode cells_ensure(cells *c, PetscInt n_cells, PetscInt n_particles) {
   PetscFunctionBeginUser;
   if (n_cells + 1 > c->n_alloc_cells || n_particles > c->n_alloc_particles) {
-    PetscCall(PetscFree4(c->start, c->order, c->position, c->cell_of));
+    PetscCall(PetscFree3(c->start, c->order, c->position));
     c->n_alloc_cells = PetscMax(n_cells + 1, c->n_alloc_cells);
     c->n_alloc_particles = PetscMax(n_particles + n_particles / 4, c->n_alloc_particles);
-    PetscCall(PetscMalloc4(c->n_alloc_cells, &c->start, c->n_alloc_particles, &c->order,
-                           c->n_alloc_particles, &c->position, c->n_alloc_particles, &c->cell_of));
+    PetscCall(PetscMalloc3(c->n_alloc_cells, &c->start, c->n_alloc_particles, &c->order,
+                           c->n_alloc_particles, &c->position));
   }
   PetscFunctionReturn(0);
 }
@@ -160,11 +160,13 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
     c->lo[k] = lo[k];
   PetscCall(cells_ensure(c, n_cells, n));
 
-  /* counting sort by cell; positions outside the covered region clamp to edge cells */
+  /* counting sort by cell; positions outside the covered region clamp to edge cells.
+   * position[] holds each row's cell until the order is known (one array fewer a row) */
+  PetscInt *cell_of = c->position;
   PetscCall(PetscArrayzero(c->start, n_cells + 1));
   for (PetscInt i = 0; i < n; i++) {
-    c->cell_of[i] = cells_locate(lo, inv, c->n, ps->x[i]);
-    c->start[c->cell_of[i] + 1]++;
+    cell_of[i] = cells_locate(lo, inv, c->n, ps->x[i]);
+    c->start[cell_of[i] + 1]++;
   }
   for (PetscInt k = 0; k < n_cells; k++)
     c->start[k + 1] += c->start[k];
@@ -173,7 +175,7 @@ PetscErrorCode cells_build_pairs(cells *c, const particles *ps, const double lo[
     PetscCall(PetscMalloc1(n_cells, &fill));
     PetscCall(PetscArraycpy(fill, c->start, n_cells));
     for (PetscInt i = 0; i < n; i++)
-      c->order[fill[c->cell_of[i]]++] = i;
+      c->order[fill[cell_of[i]]++] = i;
     PetscCall(PetscFree(fill));
   }
   /* mpi: within a cell, order by x and global id (cells_row_before). The pairs of a
