@@ -355,7 +355,7 @@ static PetscErrorCode sph_destroy(module *self) {
   sph_data *d = self->data;
   PetscFunctionBeginUser;
   PetscCall(sph_wall_destroy(&d->wall));
-  PetscCall(PetscFree2(d->force.P, d->force.inv_rho));
+  PetscCall(PetscFree3(d->force.P, d->force.inv_rho, d->force.J));
   if (d->force.cells)
     PetscCall(sph_cells_work_destroy(d->force.cells));
   PetscCall(PetscFree(d->force.cells));

@@ -17,13 +17,14 @@ typedef struct {
   const double (*restrict x)[2], (*restrict v_est)[2], (*restrict v_visc)[2];
   const double *restrict mass, *restrict rho;
   const double *restrict P, *restrict inv_rho; /* p/rho^2 and 1/rho per particle */
+  const double *restrict J;                    /* sqrt(mu_i + mu_j)/rho per particle */
   const double *restrict p;                    /* pressure (corrected sweeps) */
   double (*restrict a)[2];
   double *restrict drho;
   const PetscInt *restrict type;
   const sph_correction *restrict corr; /* per-row tensors (corrected sweeps only) */
   const double (*restrict pair)[2];    /* per-pair F, 1/r^2 of the correction pass */
-  double h, inv_h, norm, mu_sum, alpha, beta, c0, delta_hs_c0;
+  double h, inv_h, norm, alpha, beta, c0, delta_hs_c0;
   double nu2; /* 2 nu (corrected sweeps) */
 } force_args;
 
@@ -50,7 +51,8 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
   const double *restrict P = A->P, *restrict inv_rho = A->inv_rho;
   double(*restrict a)[2] = A->a;
   double *restrict drho = A->drho;
-  const double h = A->h, inv_h = A->inv_h, norm = A->norm, mu_sum = A->mu_sum, h2 = h * h;
+  const double *restrict J = A->J;
+  const double h = A->h, inv_h = A->inv_h, norm = A->norm, h2 = h * h;
   const double grad_norm = sph_kernel_grad_norm(kernel, 2, norm, inv_h);
   /* the correction pass left F and 1/r^2 of every pair: the artificial
    * viscosity and the density diffusion, which need r and dW/dr, recompute */
@@ -102,7 +104,7 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       a[j][0] += mass[i] * Tj[0];
       a[j][1] += mass[i] * Tj[1];
     } else {
-      sph_force_iact(rij, grad, P[i], P[j], inv_rho[i], inv_rho[j], vvisc, mu_sum, T);
+      sph_force_iact(rij, grad, P[i], P[j], J[i], J[j], vvisc, T);
     }
     if (artificial || continuity) {
       const double vij[2] = {v_est[i][0] - v_est[j][0], v_est[i][1] - v_est[j][1]};
@@ -206,13 +208,17 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
     PetscFunctionReturn(0);
   }
   if (n > work->n_alloc) {
-    PetscCall(PetscFree2(work->P, work->inv_rho));
+    PetscCall(PetscFree3(work->P, work->inv_rho, work->J));
     work->n_alloc = n + n / 4;
-    PetscCall(PetscMalloc2(work->n_alloc, &work->P, work->n_alloc, &work->inv_rho));
+    PetscCall(PetscMalloc3(work->n_alloc, &work->P, work->n_alloc, &work->inv_rho, work->n_alloc,
+                           &work->J));
   }
+  /* mu_i + mu_j with one liquid of dynamic viscosity rho0 nu */
+  const double sqrt_mu_sum = sqrt(2.0 * sp->rho0 * sp->nu);
   for (PetscInt i = 0; i < n; i++) {
     work->inv_rho[i] = 1.0 / ps->rho[i];
     work->P[i] = ps->p[i] * work->inv_rho[i] * work->inv_rho[i];
+    work->J[i] = sqrt_mu_sum * work->inv_rho[i];
   }
   const force_args A = {
       .n_pairs = s->cel.n_pairs,
@@ -226,6 +232,7 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
       .rho = ps->rho,
       .P = work->P,
       .inv_rho = work->inv_rho,
+      .J = work->J,
       .p = ps->p,
       .a = ps->a,
       .drho = ps->drho,
@@ -235,8 +242,6 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
       .h = sp->h,
       .inv_h = 1.0 / sp->h,
       .norm = sph_kernel_norm(sp->kernel, 2, sp->h),
-      /* mu_i + mu_j with one liquid of dynamic viscosity rho0 nu */
-      .mu_sum = 2.0 * sp->rho0 * sp->nu,
       .nu2 = 2.0 * sp->nu,
       .alpha = sp->av_alpha,
       .beta = sp->av_beta,

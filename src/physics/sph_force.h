@@ -5,13 +5,13 @@
 #include "sph_correction_iact.h"
 
 /* sph_force.c: momentum (and continuity) sweep over the pair list; the work
- * arrays hold per-particle p/rho^2 and 1/rho (owned and ghost rows) */
+ * arrays hold per-particle p/rho^2, 1/rho and sqrt(mu_i + mu_j)/rho (owned and ghost rows) */
 typedef struct sph_cells_work sph_cells_work;
 typedef struct {
   PetscInt n_alloc;
-  double *P, *inv_rho;
-  sph_cells_work *cells; /* the vectorised sweep's copy (sph_force_cells.c) */
-  PetscBool visc_is_est; /* no walls: the viscous term reads v_est (sph_viscous_velocity) */
+  double *P, *inv_rho, *J; /* p/rho^2, 1/rho, sqrt(mu_i + mu_j)/rho per row */
+  sph_cells_work *cells;   /* the vectorised sweep's copy (sph_force_cells.c) */
+  PetscBool visc_is_est;   /* no walls: the viscous term reads v_est (sph_viscous_velocity) */
 } sph_force_work;
 /* corr: the per-row tensors of -sph_kernel_correction and pair: the per-pair kernel
  * values of the same pass (sph_correction.c); NULL, NULL = plain operators */
@@ -43,9 +43,9 @@ static inline const double (*sph_viscous_velocity(const particles *ps,
 double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
 /* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
  * pair-list sweep. Its copy of the fields in cell order, one row of cells in each of two slots:
- * x, y, v_visc (2), v_est (2), p/rho^2, 1/rho, m, rho, a (2), d rho/dt, and per row the pair
- * flags. */
-#define SPH_CELLS_NFIELDS 13
+ * x, y, v_visc (2), v_est (2), p/rho^2, 1/rho, m, rho, a (2), d rho/dt, sqrt(mu_i + mu_j)/rho,
+ * and per row the pair flags. */
+#define SPH_CELLS_NFIELDS 14
 typedef struct sph_cells_work {
   PetscInt n_alloc;                /* rows per slot */
   double *f[2][SPH_CELLS_NFIELDS]; /* NULL where the run does not read the field */

@@ -105,14 +105,19 @@ SPH_INLINE void cells_store_pair(double *restrict dst, const double *restrict s0
   }
 }
 
-/* m, 1/rho and p/rho^2 (vectorised: the divisions eight at a time) */
+/* m, p/rho^2, J = sqrt(mu_i + mu_j)/rho (sph_force_iact.h) and, with keep_ir (a constant: the
+ * density diffusion reads it), 1/rho; vectorised, the divisions eight at a time */
 SPH_INLINE void cells_copy_scalars(double *restrict M, double *restrict IR, double *restrict P,
-                                   const double *restrict mass, const double *restrict rho,
-                                   const double *restrict p, PetscInt len) {
+                                   double *restrict J, const double *restrict mass,
+                                   const double *restrict rho, const double *restrict p,
+                                   double sqrt_mu_sum, PetscInt len, int keep_ir) {
   for (PetscInt t = 0; t < len; t++) {
+    const double ir = 1.0 / rho[t];
     M[t] = mass[t];
-    IR[t] = 1.0 / rho[t];
-    P[t] = p[t] * IR[t] * IR[t];
+    if (keep_ir)
+      IR[t] = ir;
+    P[t] = p[t] * ir * ir;
+    J[t] = sqrt_mu_sum * ir;
   }
 }
 /* the pair flags of the build (cells.c) and whether a row is a wall now */
@@ -125,7 +130,7 @@ SPH_INLINE void cells_copy_flags(unsigned char *restrict fl, const unsigned char
 
 /* One row of cells in a slot: slot position t holds cell-order position base + t. */
 typedef struct {
-  double *X, *Y, *VX, *VY, *EX, *EY, *P, *IR, *M, *RHO;
+  double *X, *Y, *VX, *VY, *EX, *EY, *P, *IR, *M, *RHO, *J;
   double *AX, *AY, *DR;
   unsigned char *FL;
   const PetscInt *order; /* slot position -> row */
@@ -134,7 +139,7 @@ typedef struct {
 typedef struct {
   const struct topology *excl; /* bonded pairs to leave out, or NULL */
   const particles *ps;
-  double h2, r2_floor, inv_h, grad_norm, mu_sum, h, av_h2, neg_alpha_c0, beta, two_dhc;
+  double h2, r2_floor, inv_h, grad_norm, grad_norm_inv_h, h, av_h2, neg_alpha_c0, beta, two_dhc;
 } cells_args;
 
 /* the particle a's own sums, in the order of its partners */
@@ -171,16 +176,18 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
   const int read_est = (artificial || continuity) && !same_v; /* else EX, EY may not exist */
   const __m512d exa = read_est ? _mm512_set1_pd(S->EX[a]) : _mm512_setzero_pd();
   const __m512d eya = read_est ? _mm512_set1_pd(S->EY[a]) : _mm512_setzero_pd();
-  const __m512d Pa = _mm512_set1_pd(S->P[a]), IRa = _mm512_set1_pd(S->IR[a]);
+  const __m512d Pa = _mm512_set1_pd(S->P[a]), Ja = _mm512_set1_pd(S->J[a]);
   const __m512d Ma = _mm512_set1_pd(S->M[a]);
-  const __m512d MIRa = _mm512_set1_pd(S->M[a] * S->IR[a]);
+  /* 1/rho exists only for the density diffusion (cells_copy_scalars) */
+  const __m512d MIRa = diffusion ? _mm512_set1_pd(S->M[a] * S->IR[a]) : _mm512_setzero_pd();
   const __m512d RHOa = diffusion || artificial ? _mm512_set1_pd(S->RHO[a]) : _mm512_setzero_pd();
   const unsigned fa = S->FL[a];
   const __m512i no_pair = _mm512_set1_epi64(fa & FL_NO_PAIR);
   const __m512i wall_now = _mm512_set1_epi64(FL_WALL_NOW);
   const __m512d h2 = _mm512_set1_pd(A->h2), r2_floor = _mm512_set1_pd(A->r2_floor);
   const __m512d inv_h = _mm512_set1_pd(A->inv_h), one = _mm512_set1_pd(1.0);
-  const __m512d grad_norm = _mm512_set1_pd(A->grad_norm), mu_sum = _mm512_set1_pd(A->mu_sum);
+  const __m512d grad_norm = _mm512_set1_pd(A->grad_norm);
+  const __m512d grad_norm_inv_h = _mm512_set1_pd(A->grad_norm_inv_h);
   const __m512d sign = _mm512_set1_pd(-0.0);
   for (PetscInt b = first; b < last; b += 8) {
     const __mmask8 tail = last - b >= 8 ? 0xFF : (__mmask8)((1u << (last - b)) - 1u);
@@ -206,15 +213,15 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
     if (!m)
       continue;
     const __m512d r = _mm512_sqrt_pd(r2);
-    const __m512d mq = _mm512_sub_pd(one, _mm512_mul_pd(r, inv_h)); /* 1 - q */
-    __m512d grad = _mm512_mul_pd(_mm512_mul_pd(grad_norm, mq), mq);
+    /* sph_kernel_grad's g (1 - q)^k: (g - r g/h) (1 - r/h)^(k-1) */
+    const __m512d mq = _mm512_fnmadd_pd(r, inv_h, one); /* 1 - q */
+    __m512d grad = _mm512_mul_pd(_mm512_fnmadd_pd(r, grad_norm_inv_h, grad_norm), mq);
     if (kernel == SPH_KERNEL_WENDLAND)
       grad = _mm512_mul_pd(grad, mq);
-    const __m512d Pb = _mm512_maskz_loadu_pd(m, T->P + b),
-                  IRb = _mm512_maskz_loadu_pd(m, T->IR + b);
+    const __m512d Pb = _mm512_maskz_loadu_pd(m, T->P + b), Jb = _mm512_maskz_loadu_pd(m, T->J + b);
     const __m512d Mb = _mm512_maskz_loadu_pd(m, T->M + b);
     const __m512d press = _mm512_xor_pd(_mm512_add_pd(Pa, Pb), sign);
-    const __m512d visc = _mm512_mul_pd(_mm512_mul_pd(mu_sum, _mm512_mul_pd(IRa, IRb)), grad);
+    const __m512d visc = _mm512_mul_pd(_mm512_mul_pd(Ja, Jb), grad);
     const __m512d pg = _mm512_mul_pd(press, grad);
     const __m512d vvx = _mm512_sub_pd(vxa, _mm512_maskz_loadu_pd(m, T->VX + b));
     const __m512d vvy = _mm512_sub_pd(vya, _mm512_maskz_loadu_pd(m, T->VY + b));
@@ -268,6 +275,7 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
         /* a's diffusion term rides with its continuity term, compressed by m like
          * it so that the buffers stay aligned: 0 where md is off, and adding 0 leaves
          * a sum's bits as the pair-list sweep that skips the term */
+        const __m512d IRb = _mm512_maskz_loadu_pd(m, T->IR + b);
         const __m512d own_d = _mm512_maskz_mul_pd(md, _mm512_mul_pd(Mb, IRb), D);
         _mm512_storeu_pd(o->d + n_buf, _mm512_maskz_compress_pd(m, own_d));
       }
@@ -342,8 +350,9 @@ typedef struct {
   const cells *c;
   particles *ps;
   const double (*vv)[2]; /* the viscous term's velocity (sph_viscous_velocity) */
-  int need_est, continuity, copy_rho;
-  int zero_sums; /* a and drho hold nothing yet (sim's rates_unset): the sums start at 0 */
+  int need_est, continuity, copy_rho, keep_ir;
+  double sqrt_mu_sum; /* J = sqrt(mu_i + mu_j)/rho (sph_force_iact.h) */
+  int zero_sums;      /* a and drho hold nothing yet (sim's rates_unset): the sums start at 0 */
 } cells_fill_args;
 
 /* The next segment (cells.h) that reaches past `first`, from *seg on: the copies visit the
@@ -375,8 +384,12 @@ static void cells_slot_fill(const cells_fill_args *F, cells_slot *S, PetscInt fi
       cells_copy_pair(S->EX + t0, S->EY + t0, ps->v_est[i0], len);
     if (!F->zero_sums)
       cells_copy_pair(S->AX + t0, S->AY + t0, ps->a[i0], len);
-    cells_copy_scalars(S->M + t0, S->IR + t0, S->P + t0, ps->mass + i0, ps->rho + i0, ps->p + i0,
-                       len);
+    if (F->keep_ir)
+      cells_copy_scalars(S->M + t0, S->IR + t0, S->P + t0, S->J + t0, ps->mass + i0, ps->rho + i0,
+                         ps->p + i0, F->sqrt_mu_sum, len, 1);
+    else
+      cells_copy_scalars(S->M + t0, NULL, S->P + t0, S->J + t0, ps->mass + i0, ps->rho + i0,
+                         ps->p + i0, F->sqrt_mu_sum, len, 0);
     if (F->copy_rho)
       memcpy(S->RHO + t0, ps->rho + i0, (size_t)len * sizeof(double));
     if (F->continuity && !F->zero_sums)
@@ -421,11 +434,13 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   const int diffusion = continuity && sp->delta > 0;
   const int need_est = (continuity || artificial) && !visc_is_est;
-  unsigned need = 0x1 | 0x2 | 0x4 | 0x8 | 0x40 | 0x80 | 0x100 | 0x400 | 0x800; /* always */
+  unsigned need = 0x1 | 0x2 | 0x4 | 0x8 | 0x40 | 0x100 | 0x400 | 0x800 | 0x2000; /* always */
   if (need_est)
     need |= 0x10 | 0x20;
   if (artificial || diffusion)
     need |= 0x200;
+  if (diffusion)
+    need |= 0x80; /* 1/rho */
   if (continuity)
     need |= 0x1000;
   const PetscInt n0 = c->n[0], n1 = c->n[1];
@@ -450,6 +465,7 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
         .AX = f[10],
         .AY = f[11],
         .DR = f[12],
+        .J = f[13],
         .FL = w->fl[k],
     };
   }
@@ -461,7 +477,7 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
       .r2_floor = SPH_R2_FLOOR * (sp->h * sp->h),
       .inv_h = inv_h,
       .grad_norm = sph_kernel_grad_norm(sp->kernel, 2, norm, inv_h),
-      .mu_sum = 2.0 * sp->rho0 * sp->nu,
+      .grad_norm_inv_h = sph_kernel_grad_norm(sp->kernel, 2, norm, inv_h) * inv_h,
       .h = sp->h,
       .av_h2 = 0.01 * sp->h * sp->h,
       .neg_alpha_c0 = -sp->av_alpha * sp->c0,
@@ -479,6 +495,8 @@ PetscErrorCode sph_force_cells_compute(sim *s, const sph_params *sp, sph_cells_w
       .need_est = need_est,
       .continuity = continuity,
       .copy_rho = artificial || diffusion,
+      .keep_ir = diffusion,
+      .sqrt_mu_sum = sqrt(2.0 * sp->rho0 * sp->nu), /* one liquid: mu = rho0 nu */
       .zero_sums = s->rates_unset,
   };
   s->rates_unset = PETSC_FALSE; /* set now, for every owned row (cells_slot_store) */

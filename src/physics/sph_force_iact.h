@@ -18,18 +18,18 @@
 #include "sph_kernel.h"
 
 /* Every pair function takes grad = (dW/dr)/r (sph_kernel_grad), so that
- * grad_i W_ij = grad r_ij. P = p / rho^2 and 1/rho are per-particle values
- * computed once before the pair loop (sph_force.c). The operations are written
+ * grad_i W_ij = grad r_ij. P = p / rho^2 and J = sqrt(mu_i + mu_j) / rho are
+ * per-particle values computed once before the pair loop (sph_force.c; one liquid:
+ * mu_i + mu_j = 2 rho0 nu, the same for every pair, so (mu_i + mu_j)/(rho_i rho_j)
+ * = J_i J_j costs one multiply a pair instead of three). The operations are written
  * in the order the vectorised sweep (sph_force_cells.c) repeats lane by lane, so
  * both give the same bits. */
-SPH_INLINE void sph_force_iact(const double rij[2], double grad, double P_i, double P_j,
-                               double inv_rho_i, double inv_rho_j, const double vvisc_ij[2],
-                               double mu_sum, double T[2]) {
+SPH_INLINE void sph_force_iact(const double rij[2], double grad, double P_i, double P_j, double J_i,
+                               double J_j, const double vvisc_ij[2], double T[2]) {
   const double press = -(P_i + P_j);
-  /* (inv_rho_i * inv_rho_j) first: the product is then symmetric in i, j bit for
-   * bit, so T(j, i) == -T(i, j) exactly and sums do not depend on which of the
-   * two is listed first (rank-count invariance, doc/parallel.md) */
-  const double visc = mu_sum * (inv_rho_i * inv_rho_j) * grad;
+  /* J_i * J_j is symmetric in i, j bit for bit, so T(j, i) == -T(i, j) exactly and sums do
+   * not depend on which of the two is listed first (rank-count invariance, doc/parallel.md) */
+  const double visc = (J_i * J_j) * grad;
   const double pg = press * grad;
   T[0] = pg * rij[0] + visc * vvisc_ij[0];
   T[1] = pg * rij[1] + visc * vvisc_ij[1];

@@ -101,12 +101,15 @@ SPH_INLINE double sph_kernel_grad_norm(sph_kernel_kind kind, int dim, double nor
   return 0.0;
 }
 
+/* (dW/dr)/r. For Lucy and Wendland, g (1 - q)^k is evaluated as (g - r g/h) (1 - r/h)^(k-1),
+ * each bracket one fused multiply-add (exactly rounded wherever fma runs): three operations
+ * instead of four, as the vectorised momentum sweep does them (sph_force_cells.c). */
 SPH_INLINE double sph_kernel_grad(sph_kernel_kind kind, int dim, double grad_norm, double norm,
                                   double inv_h, double r) {
-  const double q = r * inv_h, m = 1.0 - q;
+  const double q = r * inv_h;
   switch (kind) {
   case SPH_KERNEL_LUCY:
-    return grad_norm * m * m;
+    return fma(-r, grad_norm * inv_h, grad_norm) * fma(-r, inv_h, 1.0);
   case SPH_KERNEL_CUBIC: {
     const double u = 2.0 * q;
     if (u < 1.0)
@@ -114,8 +117,10 @@ SPH_INLINE double sph_kernel_grad(sph_kernel_kind kind, int dim, double grad_nor
     const double v = 2.0 - u;               /* the outer piece has no factor u: divide */
     return -norm * 0.75 * v * v * 2.0 * inv_h / r;
   }
-  case SPH_KERNEL_WENDLAND:
-    return dim == 1 ? grad_norm * m * m : grad_norm * m * m * m;
+  case SPH_KERNEL_WENDLAND: {
+    const double gm = fma(-r, grad_norm * inv_h, grad_norm), m = fma(-r, inv_h, 1.0);
+    return dim == 1 ? gm * m : gm * m * m;
+  }
   }
   return 0.0;
 }

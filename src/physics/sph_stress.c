@@ -20,7 +20,7 @@ PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, const double (*vv
   const double h2 = sp->h * sp->h, inv_h = 1.0 / sp->h,
                norm = sph_kernel_norm(sp->kernel, 2, sp->h),
                grad_norm = sph_kernel_grad_norm(sp->kernel, 2, norm, inv_h);
-  const double mu_sum = 2.0 * sp->rho0 * sp->nu;
+  const double sqrt_mu_sum = sqrt(2.0 * sp->rho0 * sp->nu); /* sph_force_iact's J = this / rho */
   const int artificial = sp->av_alpha > 0.0 || sp->av_beta > 0.0;
   double(*fp)[2], (*L)[4];
   PetscFunctionBeginUser;
@@ -37,14 +37,14 @@ PetscErrorCode sph_stress_virial(sim *s, const sph_params *sp, const double (*vv
     const double Pi = ps->p[i] * inv_ri * inv_ri, Pj = ps->p[j] * inv_rj * inv_rj;
     const double vvisc[2] = {vv[i][0] - vv[j][0], vv[i][1] - vv[j][1]};
     double T[2], Tp[2];
-    sph_force_iact(rij, grad, Pi, Pj, inv_ri, inv_rj, vvisc, mu_sum, T);
+    sph_force_iact(rij, grad, Pi, Pj, sqrt_mu_sum * inv_ri, sqrt_mu_sum * inv_rj, vvisc, T);
     if (artificial) {
       const double vij[2] = {ps->v_est[i][0] - ps->v_est[j][0], ps->v_est[i][1] - ps->v_est[j][1]};
       sph_force_iact_artificial_viscosity(rij, r2, grad, ps->rho[i], ps->rho[j], vij, sp->av_alpha,
                                           sp->av_beta, sp->c0, sp->h, T);
     }
     const double zero[2] = {0, 0};
-    sph_force_iact(rij, grad, Pi, Pj, inv_ri, inv_rj, zero, 0.0, Tp); /* pressure part only */
+    sph_force_iact(rij, grad, Pi, Pj, 0.0, 0.0, zero, Tp); /* pressure part only */
     const double mm = ps->mass[i] * ps->mass[j];
     const double wv[3] = {-0.5 * mm * rij[0] * T[0], -0.5 * mm * rij[0] * T[1],
                           -0.5 * mm * rij[1] * T[1]};

@@ -62,8 +62,9 @@ static void pair_term(const pair_state *P, int from_j, double alpha, double beta
   const double rho_a = from_j ? P->rho_j : P->rho_i, rho_b = from_j ? P->rho_i : P->rho_j;
   const double p_a = from_j ? P->p_j : P->p_i, p_b = from_j ? P->p_i : P->p_j;
   const double grad = P->dwdr / P->r, r2 = P->r * P->r;
-  sph_force_iact(rij, grad, p_a / (rho_a * rho_a), p_b / (rho_b * rho_b), 1.0 / rho_a, 1.0 / rho_b,
-                 vij, 2.0 * rho0 * nu, T);
+  const double sqrt_mu_sum = sqrt(2.0 * rho0 * nu);
+  sph_force_iact(rij, grad, p_a / (rho_a * rho_a), p_b / (rho_b * rho_b), sqrt_mu_sum / rho_a,
+                 sqrt_mu_sum / rho_b, vij, T);
   sph_force_iact_artificial_viscosity(rij, r2, grad, rho_a, rho_b, vij, alpha, beta, c0, h, T);
 }
 
