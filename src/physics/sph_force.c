@@ -139,7 +139,7 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       }
     }
     /* ghost rows receive contributions too; they are discarded (Newton's third
-     * law inside a rank only), which keeps the loop free of branches */
+     * law inside a rank only), which keeps the loop free of tests of ownership */
     if (corrected && artificial) { /* T holds the antisymmetric terms */
       a[i][0] += mass[j] * T[0];
       a[i][1] += mass[j] * T[1];
