@@ -221,12 +221,14 @@ SPH_INLINE void cells_range(sph_kernel_kind kernel, int continuity, int artifici
     const __m512d Pb = _mm512_maskz_loadu_pd(m, T->P + b), Jb = _mm512_maskz_loadu_pd(m, T->J + b);
     const __m512d Mb = _mm512_maskz_loadu_pd(m, T->M + b);
     const __m512d press = _mm512_xor_pd(_mm512_add_pd(Pa, Pb), sign);
-    const __m512d visc = _mm512_mul_pd(_mm512_mul_pd(Ja, Jb), grad);
-    const __m512d pg = _mm512_mul_pd(press, grad);
+    const __m512d JJ = _mm512_mul_pd(Ja, Jb);
     const __m512d vvx = _mm512_sub_pd(vxa, _mm512_maskz_loadu_pd(m, T->VX + b));
     const __m512d vvy = _mm512_sub_pd(vya, _mm512_maskz_loadu_pd(m, T->VY + b));
-    __m512d T0 = _mm512_add_pd(_mm512_mul_pd(pg, dx), _mm512_mul_pd(visc, vvx));
-    __m512d T1 = _mm512_add_pd(_mm512_mul_pd(pg, dy), _mm512_mul_pd(visc, vvy));
+    /* grad last (sph_force_iact.h): the brackets do not wait for the square root */
+    __m512d T0 =
+        _mm512_mul_pd(grad, _mm512_add_pd(_mm512_mul_pd(press, dx), _mm512_mul_pd(JJ, vvx)));
+    __m512d T1 =
+        _mm512_mul_pd(grad, _mm512_add_pd(_mm512_mul_pd(press, dy), _mm512_mul_pd(JJ, vvy)));
     __m512d vr = _mm512_setzero_pd(), RHOb = _mm512_setzero_pd();
     if (artificial || continuity) {
       /* same_v: no walls, v_est is v_visc (sph.c) */

@@ -29,10 +29,11 @@ SPH_INLINE void sph_force_iact(const double rij[2], double grad, double P_i, dou
   const double press = -(P_i + P_j);
   /* J_i * J_j is symmetric in i, j bit for bit, so T(j, i) == -T(i, j) exactly and sums do
    * not depend on which of the two is listed first (rank-count invariance, doc/parallel.md) */
-  const double visc = (J_i * J_j) * grad;
-  const double pg = press * grad;
-  T[0] = pg * rij[0] + visc * vvisc_ij[0];
-  T[1] = pg * rij[1] + visc * vvisc_ij[1];
+  const double JJ = J_i * J_j;
+  /* grad multiplies last: in the vectorised sweep the brackets are then computed while the
+   * square root that grad waits for is still running (a shorter chain a pair) */
+  T[0] = grad * (press * rij[0] + JJ * vvisc_ij[0]);
+  T[1] = grad * (press * rij[1] + JJ * vvisc_ij[1]);
 }
 
 /* Adds the Monaghan term to T; vij is the (predicted) relative velocity, r2 = |r_ij|^2. */
