@@ -95,9 +95,9 @@ static inline void integrate_kick_drift(particles *ps, double dt, double half, i
     const int wall = t == PTYPE_WALL, frozen = subcycled && t == PTYPE_SOLID;
     const double vj = v[j], v_new = wall || frozen ? vj : vj + half * a[j];
     const double est = wall ? vj : vj + dt * a[j];
-    v_est[j] = subcycled && frozen ? v_est[j] : est;
+    v_est[j] = frozen ? v_est[j] : est;
     v[j] = v_new;
-    x[j] = subcycled && frozen ? x[j] : x[j] + dt * v_new;
+    x[j] = frozen ? x[j] : x[j] + dt * v_new;
   }
 }
 

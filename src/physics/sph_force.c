@@ -87,8 +87,12 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
      * fused multiply-add (a single rounding: the vectorised sweep's partner update, one
      * instruction instead of two). The two round differently, so which row is which follows
      * the cell order, which is the same on every rank count (cells.h), and not the pair
-     * list's i < j of local rows, which is not. Corrected sweeps keep both sides unfused. */
+     * list's i < j of local rows, which is not. Corrected sweeps keep both sides unfused.
+     * f and s: the first and the second row; sgn turns the pair's terms, seen from i, into
+     * the same terms seen from f (an exact sign flip). */
     const int i_first = A->position[i] < A->position[j];
+    const PetscInt f = i_first ? i : j, s = i_first ? j : i;
+    const double sgn = i_first ? 1.0 : -1.0;
     const double vvisc[2] = {v_visc[i][0] - v_visc[j][0], v_visc[i][1] - v_visc[j][1]};
     double T[2] = {0.0, 0.0}; /* antisymmetric: a_i += m_j T, a_j -= m_i T */
     if (corrected) {
@@ -114,13 +118,8 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       if (continuity) {
         if (!corrected) { /* else -rho_i div_i per particle (sph_force_compute) */
           const double q = sph_continuity_iact(rij, grad, vij);
-          if (i_first) {
-            drho[i] += mass[j] * q;
-            drho[j] = fma(mass[i], q, drho[j]);
-          } else {
-            drho[j] += mass[i] * q;
-            drho[i] = fma(mass[j], q, drho[i]);
-          }
+          drho[f] += mass[s] * q; /* q is symmetric in the pair */
+          drho[s] = fma(mass[f], q, drho[s]);
         }
         /* walls' densities are extrapolated (sph_wall.c): no diffusion through them */
         if (diffusion && A->type[i] != PTYPE_WALL && A->type[j] != PTYPE_WALL) {
@@ -128,12 +127,10 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
           if (corrected) {
             drho[i] += mass[j] * inv_rho[j] * D;
             drho[j] -= mass[i] * inv_rho[i] * D;
-          } else if (i_first) {
-            drho[i] += mass[j] * inv_rho[j] * D;
-            drho[j] = fma(-(mass[i] * inv_rho[i]), D, drho[j]);
           } else {
-            drho[j] -= mass[i] * inv_rho[i] * D;
-            drho[i] = fma(mass[j] * inv_rho[j], D, drho[i]);
+            const double D_f = sgn * D;
+            drho[f] += mass[s] * inv_rho[s] * D_f;
+            drho[s] = fma(-(mass[f] * inv_rho[f]), D_f, drho[s]);
           }
         }
       }
@@ -146,16 +143,10 @@ SPH_INLINE PetscInt64 force_sweep(sph_kernel_kind kernel, int continuity, int ar
       a[j][0] -= mass[i] * T[0];
       a[j][1] -= mass[i] * T[1];
     } else if (!corrected) {
-      if (i_first) {
-        a[i][0] += mass[j] * T[0];
-        a[i][1] += mass[j] * T[1];
-        a[j][0] = fma(-mass[i], T[0], a[j][0]);
-        a[j][1] = fma(-mass[i], T[1], a[j][1]);
-      } else {
-        a[j][0] -= mass[i] * T[0];
-        a[j][1] -= mass[i] * T[1];
-        a[i][0] = fma(mass[j], T[0], a[i][0]);
-        a[i][1] = fma(mass[j], T[1], a[i][1]);
+      for (int k = 0; k < 2; k++) {
+        const double T_f = sgn * T[k];
+        a[f][k] += mass[s] * T_f;
+        a[s][k] = fma(-mass[f], T_f, a[s][k]);
       }
     }
   }
