@@ -1,7 +1,9 @@
 /* dmhs: Discrete Multi-Hybrid System solver (SPH liquid + mass-spring solids).
  * PetscInitialize -> sim_create -> sim_run -> sim_destroy -> PetscFinalize. */
 #include <string.h>
+#include <strings.h>
 #include "dmhs/driver.h"
+#include "dmhs/options_files.h"
 
 static const char help[] =
     "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
@@ -9,27 +11,49 @@ static const char help[] =
     "Every option is listed below once, with its value and unit.\n\n";
 
 static char first_error[512]; /* for run.json (io_record_error) */
+static PetscBool trace;       /* -dmhs_traceback on the command line */
 
-/* A user sees the message that names the option, file or particle at fault,
- * and where it was raised; -dmhs_traceback gives PETSc's full traceback. */
+/* A user sees the one line that names the option, file or particle at fault;
+ * where in the source it was raised, and through which calls, only with
+ * -dmhs_traceback (after PetscInitialize, PETSc's own full traceback). */
 static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *func,
                                          const char *file, PetscErrorCode n, PetscErrorType p,
                                          const char *mess, void *ctx) {
   (void)comm;
   (void)ctx;
   if (p == PETSC_ERROR_INITIAL) {
+    char text[2048];
     int rank = 0, mpi_up = 0;
     MPI_Initialized(&mpi_up);
     if (mpi_up)
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank,
-            mess ? mess : "(no message)");
-    fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
+    options_files_explain(mess ? mess : "(no message)", text, sizeof(text));
+    fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, text);
+    if (trace)
+      fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
     if (!first_error[0])
-      snprintf(first_error, sizeof(first_error), "%s", mess ? mess : "");
+      snprintf(first_error, sizeof(first_error), "%.511s", text);
+    fflush(stderr);
+  } else if (trace) {
+    fprintf(stderr, "dmhs:   (called from %s() at %s:%d)\n", func, file, line);
     fflush(stderr);
   }
   return n;
+}
+
+/* -dmhs_traceback on the command line, read before PETSc is (its errors too get the trace):
+ * alone or followed by an option, or with true/yes/on/1. */
+static PetscBool traceback_asked(int argc, char **argv) {
+  PetscBool on = PETSC_FALSE;
+  for (int k = 1; k < argc; k++)
+    if (!strcmp(argv[k], "-dmhs_traceback")) {
+      const char *v = k + 1 < argc ? argv[k + 1] : "-";
+      on = v[0] == '-' || !strcasecmp(v, "true") || !strcasecmp(v, "yes") || !strcasecmp(v, "on") ||
+                   !strcmp(v, "1")
+               ? PETSC_TRUE
+               : PETSC_FALSE;
+    }
+  return on;
 }
 
 /* An option is "-" followed by a letter (a negative number such as -1e-3 is
@@ -77,6 +101,12 @@ int main(int argc, char **argv) {
   }
   argc = kept;
   argv[argc] = NULL;
+  trace = traceback_asked(argc, argv);
+  /* nested options files from the including file's directory (options_files.h) */
+  if (options_files_resolve(&argc, &argv)) {
+    fprintf(stderr, "dmhs: error: out of memory reading the options files\n");
+    return 1;
+  }
   ierr = PetscInitialize(&argc, &argv, NULL, help);
   if (ierr) {
     int mpi_up = 0;
@@ -88,6 +118,7 @@ int main(int argc, char **argv) {
         MPI_Abort(MPI_COMM_WORLD, 1);
       MPI_Finalize();
     }
+    options_files_free();
     return 1;
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
@@ -105,11 +136,13 @@ int main(int argc, char **argv) {
     if (size > 1)
       MPI_Abort(PETSC_COMM_WORLD, 1);
     PetscCall(PetscFinalize());
+    options_files_free();
     return 1;
   }
   PetscCall(sim_destroy(&s));
   if (traceback)
     PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize());
+  options_files_free();
   return 0;
 }

@@ -4,7 +4,9 @@
  * A fresh run creates the file and writes its header. A restarted run
  * continues it: the header and the rows with t up to the checkpoint's time
  * are kept (rows an interrupted run wrote after its last checkpoint are
- * dropped, the continued run writes them again), then rows are appended. A
+ * dropped, the continued run writes them again; so are rows at the
+ * checkpoint's time of a diagnostic that had not sampled at that step: the
+ * final output of the run that ended there), then rows are appended. A
  * restart into a directory without the file starts it with the header. */
 #ifndef DMHS_CSV_H
 #define DMHS_CSV_H

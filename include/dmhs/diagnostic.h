@@ -40,6 +40,11 @@ struct diagnostic {
   PetscErrorCode (*checkpoint_read)(diagnostic *self, struct sim *s, struct checkpoint_io *io);
   void *data;
   PetscLogEvent event; /* set by diagnostics_add */
+  /* Kept by the list: the step of its last sample (-1: none yet), and after a restart
+   * whether it had sampled at the checkpoint's step, so that its files keep their rows
+   * at that time (csv.c; errors.c by step) only then. */
+  PetscInt sampled_step;
+  PetscBool restart_sampled;
 };
 
 #define SIM_MAX_DIAGNOSTICS 16
@@ -51,12 +56,16 @@ PetscErrorCode diagnostic_create(const char *name, diagnostic **out);
 PetscErrorCode diagnostics_add(struct sim *s, diagnostic *d);
 /* The registered diagnostic of that name, or NULL. */
 diagnostic *diagnostics_find(const struct sim *s, const char *name);
-/* Whether the current step is an output time (step 0 included). */
+/* Whether the current step is an output time (step 0 included, and the final output of a run
+ * whose last step was not one). */
 PetscBool diagnostic_output_time(const struct sim *s);
 /* Whether d samples at the current step (its schedule, then its own due). */
 PetscBool diagnostic_is_due(const diagnostic *d, const struct sim *s);
 /* Samples every due diagnostic, in registration order. Collective. */
 PetscErrorCode diagnostics_sample(struct sim *s);
+/* The final output of a run whose last step was not an output time (sim's final_output set):
+ * samples every at_outputs diagnostic that did not sample at this step. Collective. */
+PetscErrorCode diagnostics_sample_final(struct sim *s);
 /* Every diagnostic's end-of-run report, in registration order. Collective. */
 PetscErrorCode diagnostics_finish(struct sim *s);
 /* Destroys and frees every diagnostic; the list is empty after. */

@@ -1,10 +1,11 @@
 /* Output, checkpoints, restart and the run record (src/io/io.c): the glue the
  * step loop calls. Options (-output_snapshots, -checkpoint_interval,
  * -checkpoint_at_end, -restart) are read in one options pass; snapshots and
- * the XDMF index are written at every output time, checkpoints at an interval,
- * at the end and when SIGTERM / SIGUSR1 arrives; <output_dir>/run.json records
- * version, options, rank count, start/end time, the exit status and, at the
- * end, the halo's sizes over the ranks. */
+ * the XDMF index are written at every output time and at the end,
+ * checkpoints at an interval, at the end and when SIGTERM / SIGINT / SIGUSR1
+ * arrives; <output_dir>/run.json records version, options, rank count,
+ * start/end time, the exit status and, at the end, the halo's sizes over the
+ * ranks. */
 #ifndef DMHS_IO_H
 #define DMHS_IO_H
 #include <petscsys.h>
@@ -35,6 +36,9 @@ typedef struct io_state {
   PetscBool run_json_started;
   PetscBool halo_known; /* halo holds the sizes of the last build (the run reached its end) */
   halo_stats halo;      /* run.json "halo" */
+  /* csv_open after a restart keeps the rows at the checkpoint's time (those of a diagnostic
+   * that sampled there; set around each sample by the diagnostics list) */
+  PetscBool csv_keep_restart_rows;
 } io_state;
 
 /* Options pass; also called for -help. Must run before the scene is built. */
@@ -49,8 +53,11 @@ PetscErrorCode io_setup(struct sim *s);
 PetscErrorCode io_restart(struct sim *s);
 /* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false. */
 PetscErrorCode io_output(struct sim *s);
-/* After every step: checkpoint at the interval or on a signal; *stop on a signal. */
+/* After every step (and before the first): checkpoint at the interval or on a stop signal
+ * (stop_signal.h) that any rank got; then *stop, and run.json says "signal-checkpoint". */
 PetscErrorCode io_after_step(struct sim *s, PetscBool *stop);
+/* The end checkpoint (-checkpoint_at_end), unless one was written at this step. */
+PetscErrorCode io_checkpoint_at_end(struct sim *s);
 /* After the loop: final checkpoint (-checkpoint_at_end), run.json with the exit status. */
 PetscErrorCode io_finish(struct sim *s);
 PetscErrorCode io_destroy(struct sim *s);

@@ -53,6 +53,10 @@ PetscErrorCode options_physics(char **text);
  * "-name X in the checkpoint, Y now; ..." in report, and how many. */
 PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
                                        int *n_changed);
+/* For an option nobody read (name with its leading '-'): the recorded option names closest
+ * to it (up to three as close as the closest) by edit distance, or else that it starts or
+ * that start it, as "-a, -b or -c" in out; "" when none is close. */
+PetscErrorCode options_nearest(const char *name, char *out, size_t len);
 /* Clears the record (sim_destroy). */
 void options_forget(void);
 /* -help: from now on the recorded values stay (those of the chosen scene, read

@@ -32,6 +32,8 @@ typedef struct sim {
   double t, dt, t_end;
   PetscInt step;
   double output_interval, next_output_t; /* physical time between output rows/snapshots */
+  PetscInt last_output_step; /* the step of the last output (-1: none in this session) */
+  PetscBool final_output;    /* the run's final output, its last step not an output time */
   double progress_interval, next_progress_t;
   char output_dir[PETSC_MAX_PATH_LEN];
   PetscBool quiet;

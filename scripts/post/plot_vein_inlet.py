@@ -3,8 +3,9 @@
 
   scripts/post/plot_vein_inlet.py RUNDIR [RUNDIR ...] [--out PATH]
 
-Draws u_mean (cross-section mean) and u_centre (axis) at the inlet station
-from each run's vein.csv, one colour per run labelled by its dx and g0, with
+Draws the cross-section mean inlet velocity (u_flux, the volume flux over
+the width, where vein.csv has it, else the inlet slab's u_mean) and u_centre
+(axis) at the inlet station from each run's vein.csv, one colour per run labelled by its dx and g0, with
 the thesis's peak inlet velocities (0.03 / 0.07 / 0.13 m/s for g0 = 0.1 /
 0.25 / 0.4 m/s^2) as dashed lines, and prints each run's peak over the first
 cycle. Writes vein_inlet.png into the first RUNDIR unless --out is given.
@@ -30,11 +31,13 @@ def main():
     a = ap.parse_args()
     fig, axs = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     seen = set()
-    print("run, dx [m], g0 [m/s^2], T [s], t_end [s], peak u_mean, peak u_centre over the first cycle [m/s]")
+    print("run, dx [m], g0 [m/s^2], T [s], t_end [s], peak cross-section mean (u_flux or u_mean), "
+          "peak u_centre over the first cycle [m/s]")
     for k, d in enumerate(a.rundirs):
         vc.require_dir(d)
         cols, info = vc.read_csv(os.path.join(d, "vein.csv"), need=("t", "u_mean", "u_centre"))
-        t, um, uc = cols["t"], cols["u_mean"], cols["u_centre"]
+        t, uc = cols["t"], cols["u_centre"]
+        um, uname = vc.inlet_velocity(cols)
         T = info.get("T", np.inf)
         first = t <= T * (1 + 1e-9)
         dx, g0 = info.get("dx", np.nan), info.get("g0", np.nan)
@@ -50,7 +53,7 @@ def main():
         if g0 in THESIS:
             for ax in axs:
                 ax.axhline(THESIS[g0], color=c, ls="--", lw=0.8)
-    axs[0].set_ylabel("u_mean (cross-section) [m/s]")
+    axs[0].set_ylabel("cross-section mean [m/s]\n(u_flux; u_mean where absent)")
     axs[1].set_ylabel("u_centre (axis) [m/s]")
     axs[1].set_xlabel("t [s]")
     axs[0].legend(fontsize=8)

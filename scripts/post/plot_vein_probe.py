@@ -9,7 +9,7 @@ panels over a shared t axis:
      is chosen, are gaps), with the summary's time average +- std;
   2. its total stress |sigma| [Pa] (log axis when every value is positive),
      with the summary's mean peak per cycle +- std when there is one;
-  3. the inlet velocities u_mean and u_centre [m/s];
+  3. the inlet velocities u_flux (when vein.csv has it), u_mean and u_centre [m/s];
   4. the gap between the leaflet tips [mm], the rest gap dashed.
 Dotted vertical lines mark the drive periods. Writes vein_probe.png into
 OUTDIR, or --out (a .png path or a directory).
@@ -71,6 +71,8 @@ def main():
     ax[1].set_ylabel("total stress |σ| [Pa]")
     ax[1].legend(loc="upper right", fontsize=8)
 
+    if "u_flux" in r:
+        ax[2].plot(t, r["u_flux"], "-", color="k", lw=1.2, label="u_flux (volume flux / width)")
     ax[2].plot(t, r["u_mean"], "-", label="u_mean (cross-section)")
     ax[2].plot(t, r["u_centre"], "-", label="u_centre (axis)")
     ax[2].axhline(0, color="0.5", lw=0.8)

@@ -1,84 +1,119 @@
 #!/usr/bin/python3
 """Wash-out of the sinus liquid, one panel per drive period (the thesis's Fig. 4.4).
 
-  scripts/post/plot_vein_sinus.py OUTDIR [--out PATH]
+  scripts/post/plot_vein_sinus.py OUTDIR [--window X0,X1] [--out PATH]
 
-Reads OUTDIR/vein-sinus.csv (t,cycle,gid,x,y,displacement: the liquid that
-started in the sinus, once per period) and, for context, the walls (grey) and
-leaflets (black) of the snapshot OUTDIR/snap_*.h5 nearest to each cycle's t.
-The sinus liquid is coloured by its displacement |x - x0| [mm] (minimum image
-in the periodic x) on one colour scale shared by all panels. Writes
-vein_sinus.png into OUTDIR, or --out (a .png path or a directory).
+Reads OUTDIR/vein.csv (the drive period T from its comment) and, for each
+completed cycle k = 1, 2, ..., the snapshot OUTDIR/snap_*.h5 nearest to t = k T.
+The liquid that started in the sinus (tracer = 1) is drawn as a filled contour
+map of its displacement |x - x0| [mm] (minimum image in the periodic x), kernel-
+interpolated over the tracer liquid alone (vein_grid.py: Lucy, h = 2.5 dx,
+Shepard-normalised) and shown where the interpolated tracer indicator (the
+tracer's share of the liquid) is at least 0.5 and the liquid's kernel sum at
+least 0.5; the other liquid pale blue, walls grey, leaflets black. One colour
+scale, shared by all panels, ends at the 99.5th percentile of the maps. A run
+that has not completed a cycle yet shows its last snapshot.
+
+  --window X0,X1  x range [mm] (default: the sinus and 10 mm either side)
+Writes vein_sinus.png into OUTDIR, or --out (a .png path or a directory).
 """
 import argparse
 import math
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import vein_common as vc  # noqa: E402
+import vein_grid as vg  # noqa: E402
+
+OTHER_LIQUID = "#dbe6f2"
+LEVELS = 24
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("outdir", metavar="OUTDIR", help="output directory of a vein run")
+    ap.add_argument("--window", default=None, help="x range X0,X1 [mm] (default: the sinus +- 10 mm)")
     ap.add_argument("--out", default=None, help="PNG path or directory (default: OUTDIR)")
     args = ap.parse_args()
     vc.require_dir(args.outdir)
 
-    path = os.path.join(args.outdir, "vein-sinus.csv")
-    rows, _ = vc.read_csv(path, need=("cycle", "t", "gid", "x", "y", "displacement"))
-    _, info = vc.read_csv(os.path.join(args.outdir, "vein.csv"), need=("t",))
-    cycles = np.unique(rows["cycle"][np.isfinite(rows["cycle"])]).astype(int)
-    if cycles.size == 0:
-        vc.fail(f"{path}: no cycle")
-    disp_mm = rows["displacement"] * 1e3
-    vmax = float(np.nanmax(disp_mm)) if np.isfinite(disp_mm).any() else 1.0
+    csv_path = os.path.join(args.outdir, "vein.csv")
+    _, info = vc.read_csv(csv_path, need=("t",))
+    T = info.get("T", math.nan)
+    if not (math.isfinite(T) and T > 0):
+        vc.fail(f"{csv_path}: no drive period 'T' in the '# vein:' comment")
+    snaps = vc.snapshots(args.outdir)
+    times = np.array([s[0] for s in snaps])
+    interval = float(np.median(np.diff(times))) if times.size > 1 else T
+    n_cycles = int(math.floor(times[-1] / T + 1e-6))
+    picks = []
+    for k in range(1, n_cycles + 1):
+        i = int(np.argmin(np.abs(times - k * T)))
+        if abs(times[i] - k * T) <= max(0.51 * interval, 1e-6 * T):
+            picks.append((f"end of cycle {k}", k * T, snaps[i]))
+    if not picks:
+        print(f"{vc.PROG}: {args.outdir}: no completed drive cycle (last snapshot t = {times[-1]:.3g} s, "
+              f"T = {T:g} s): drawing the last snapshot", file=sys.stderr)
+        picks.append(("last snapshot, cycle 1 incomplete", times[-1], snaps[-1]))
+
+    names = ["x", "type", "body", "gid", "mass", "rho", "tracer", "displacement"]
+    panels = []
+    for label, t_want, (t_snap, snap) in picks:
+        d = vc.read_snapshot(snap, names)
+        geo = vg.geometry(snap, info)
+        window = vg.parse_window(args.window, geo)
+        fluid, _, _ = vc.masks(d)
+        tracer = (d["tracer"] == 1).astype(float)
+        if not (tracer[fluid] > 0).any():
+            vc.fail(f"{snap}: no liquid with tracer = 1 (the sinus liquid)")
+        disp_mm = d["displacement"] * 1e3
+        gx, gy, fields, S = vg.liquid_grid(d, [], geo, window,
+                                           extra={"ind": tracer, "disp_ind": disp_mm * tracer})
+        ind = fields["ind"]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            disp = np.ma.masked_array(fields["disp_ind"].filled(np.nan) / ind.filled(np.nan),
+                                      mask=np.ma.getmaskarray(ind) | ~(ind.filled(0) >= 0.5))
+        other = np.ma.masked_array(np.ones_like(S), mask=~((S >= vg.MASK_THRESHOLD) & np.ma.getmaskarray(disp)))
+        sel = fluid & (tracer > 0)
+        stats = (int(sel.sum()), float(np.mean(disp_mm[sel])), float(np.max(disp_mm[sel])))
+        panels.append((label, t_snap, d, geo, gx, gy, disp, other, stats))
+
+    vals = np.concatenate([np.ma.compressed(p[6]) for p in panels])
+    vals = vals[np.isfinite(vals)]
+    vmax = float(np.percentile(vals, 99.5)) if vals.size else 1.0
     vmax = vmax if vmax > 0 else 1.0
-    dx_mm = info.get("dx", math.nan) * 1e3
-    dx_mm = dx_mm if math.isfinite(dx_mm) else 0.5
+    extend = "max" if vals.size and vals.max() > vmax else "neither"
 
-    context = []
-    for c in cycles:
-        t_c = float(np.nanmax(rows["t"][rows["cycle"] == c]))
-        t_snap, snap = vc.nearest_snapshot(args.outdir, t_c)
-        context.append((c, t_c, t_snap, vc.read_snapshot(snap, ["x", "type", "body"])))
-    allx = np.concatenate([d["x"] for *_, d in context]) * 1e3
-    xlim = (allx[:, 0].min() - dx_mm, allx[:, 0].max() + dx_mm)
-    ylim = (allx[:, 1].min() - dx_mm, allx[:, 1].max() + dx_mm)
-
-    n = len(cycles)
-    panel_h = 0.8 * 10 * (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
-    fig, axes = plt.subplots(n, 1, figsize=(10, n * (panel_h + 0.6) + 1.2), sharex=True, squeeze=False)
-    axes = axes[:, 0]
-    fig.subplots_adjust(left=0.08, right=0.88, top=1 - 0.8 / fig.get_figheight(),
-                        bottom=0.55 / fig.get_figheight(), hspace=0.35)
-    for ax in axes:
-        ax.set_xlim(*xlim)
-        ax.set_ylim(*ylim)
-        ax.set_aspect("equal")
-    for ax, (c, t_c, t_snap, d) in zip(axes, context):
-        s = vc.marker_size(ax, dx_mm)
-        x_mm = d["x"] * 1e3
-        _, wall, solid = vc.masks(d)
-        ax.scatter(x_mm[wall, 0], x_mm[wall, 1], s=s, c="0.65", marker="s", linewidths=0)
-        ax.scatter(x_mm[solid, 0], x_mm[solid, 1], s=s, c="k", linewidths=0, zorder=3)
-        sel = rows["cycle"] == c
-        sc = ax.scatter(rows["x"][sel] * 1e3, rows["y"][sel] * 1e3, s=s, c=disp_mm[sel], cmap="plasma",
-                        vmin=0, vmax=vmax, linewidths=0, zorder=2)
-        ax.set_title(f"cycle {c}: t = {t_c:.3f} s, {sel.sum()} particles, mean displacement "
-                     f"{np.nanmean(disp_mm[sel]):.2f} mm (walls, leaflets at t = {t_snap:.3f} s)", fontsize=10)
-        ax.set_ylabel("y [mm]")
-        cb = fig.colorbar(sc, cax=ax.inset_axes([1.01, 0.0, 0.015, 1.0]))
-        cb.set_label("displacement [mm]")
-    axes[-1].set_xlabel("x [mm]")
-    fig.suptitle(f"{vc.case_title(info)}\nliquid that started in the sinus, once per drive period")
+    n = len(panels)
+    ncols = 1 if n <= 4 else 2
+    nrows = int(math.ceil(n / ncols))
+    window_mm = vg.extent_mm(panels[0][4])
+    ymax = vg.y_extent(panels[0][3]) * 1e3
+    pw = 7.0 if ncols == 1 else 5.5
+    pg = vg.PanelGrid(nrows, ncols, pw, pw * 2 * ymax / (window_mm[1] - window_mm[0]), cbar_room=0.0,
+                      gap=0.5, right_room=1.1, top=0.7, title=0.5, foot=0.5)
+    cs = None
+    for i, (label, t_snap, d, geo, gx, gy, disp, other, (count, mean, peak)) in enumerate(panels):
+        r, c = divmod(i, ncols)
+        ax, _ = pg.axes(r, c, colorbar=False)
+        ax.contourf(gx * 1e3, gy * 1e3, other, levels=[0.5, 1.5], colors=[OTHER_LIQUID])
+        cs = ax.contourf(gx * 1e3, gy * 1e3, disp, levels=np.linspace(0, vmax, LEVELS + 1), cmap="plasma",
+                         extend=extend)
+        vg.draw_solids(ax, d, geo)
+        vg.setup_map(ax, window_mm, ymax, xlabel=(r == nrows - 1 or i + ncols >= n), ylabel=(c == 0))
+        ax.set_title(f"{label}, t = {t_snap:.3f} s\n{count} sinus particles, displacement mean "
+                     f"{mean:.2f} mm, max {peak:.3g} mm", fontsize=9.5, loc="left")
+    vg.colorbar(pg.fig, cs, pg.side_colorbar_axes(0, nrows - 1), "mm", vmax, extend,
+                name="displacement |x − x0|")
+    pg.suptitle(f"{vg.run_title(args.outdir, info)}\nliquid that started in the sinus, coloured by its "
+                "displacement (other liquid pale blue, walls grey, leaflets black)", fontsize=10.5)
     out = vc.output_path(args.out, args.outdir, "vein_sinus.png")
-    fig.savefig(out, dpi=110)
+    pg.fig.savefig(out, dpi=150)
     print(out)
 
 

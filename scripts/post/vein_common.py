@@ -198,3 +198,51 @@ def marker_size(ax, spacing):
     x0, x1 = ax.get_xlim()
     width_pt = ax.get_position().width * fig.get_figwidth() * 72.0
     return (spacing * width_pt / abs(x1 - x0)) ** 2
+
+
+def inlet_velocity(cols):
+    """The inlet velocity a study compares: u_flux (the volume flux over the width,
+    free of the slab's sampling noise) when vein.csv has it, else u_mean."""
+    if "u_flux" in cols and np.isfinite(cols["u_flux"]).any():
+        return cols["u_flux"], "u_flux"
+    return cols["u_mean"], "u_mean"
+
+
+CYCLE_METRICS = (
+    ("u_peak", "peak inlet velocity [m/s]"),
+    ("open_max", "largest clear opening between the tips, gap - 2 dx [m]"),
+    ("open_min", "smallest clear opening between the tips, gap - 2 dx [m]"),
+    ("disp_mean", "measurement point's time-averaged displacement [m]"),
+    ("stress_peak", "measurement point's peak total stress [Pa]"),
+)
+
+
+def clear_opening(cols, dx):
+    """The tips' clear opening: their mid-plane gap less the two leaflets' half
+    thicknesses (a leaflet is two layers, 2 dx thick), the quantity the scene
+    keeps at every dx."""
+    return cols["gap"] - 2 * dx
+
+
+def cycle_metrics(cols, T, dx):
+    """Per completed drive cycle k (rows with k T < t <= (k+1) T): a list of dicts
+    with the CYCLE_METRICS keys (NaN where the measurement point is not chosen yet)
+    and 'cycle' (1-based). A cycle counts as completed when the rows reach its end."""
+    t = cols["t"]
+    u, _ = inlet_velocity(cols)
+    out = []
+    if not (T > 0) or t.size == 0:
+        return out
+    n = int(math.floor(t[-1] / T + 1e-6))
+    for k in range(n):
+        m = (t > k * T + 1e-9 * T) & (t <= (k + 1) * T + 1e-6 * T)
+        if not m.any():
+            continue
+        opening = clear_opening(cols, dx)[m]
+        row = {"cycle": k + 1, "u_peak": float(np.nanmax(np.abs(u[m]))),
+               "open_max": float(np.nanmax(opening)), "open_min": float(np.nanmin(opening))}
+        disp, stress = cols["probe_disp"][m], cols["probe_stress"][m]
+        row["disp_mean"] = float(np.nanmean(disp)) if np.isfinite(disp).any() else math.nan
+        row["stress_peak"] = float(np.nanmax(stress)) if np.isfinite(stress).any() else math.nan
+        out.append(row)
+    return out

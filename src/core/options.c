@@ -202,6 +202,79 @@ PetscErrorCode options_physics(char **text) {
   PetscFunctionReturn(0);
 }
 
+/* ---- did you mean ----------------------------------------------------------- */
+
+/* Edit distance between a and b, case-insensitive (PETSc's names are): insertions,
+ * deletions, substitutions and swaps of two neighbours each count 1; capped at
+ * OPTIONS_FAR (names longer than OPTIONS_NAME are far). */
+#define OPTIONS_FAR  99
+#define OPTIONS_NAME 128
+static int options_distance(const char *a, const char *b) {
+  int d[OPTIONS_NAME + 1][OPTIONS_NAME + 1];
+  const int n = (int)strlen(a), m = (int)strlen(b);
+  if (n > OPTIONS_NAME || m > OPTIONS_NAME)
+    return OPTIONS_FAR;
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= m; j++) {
+      if (!i || !j) {
+        d[i][j] = i + j;
+        continue;
+      }
+      const int ca = tolower((unsigned char)a[i - 1]), cb = tolower((unsigned char)b[j - 1]);
+      int v = PetscMin(d[i - 1][j] + 1, d[i][j - 1] + 1);
+      v = PetscMin(v, d[i - 1][j - 1] + (ca != cb));
+      if (i > 1 && j > 1 && ca == tolower((unsigned char)b[j - 2]) &&
+          tolower((unsigned char)a[i - 2]) == cb)
+        v = PetscMin(v, d[i - 2][j - 2] + 1);
+      d[i][j] = v;
+    }
+  return d[n][m];
+}
+
+/* How close a recorded name is to a name nobody read: its edit distance when small for the
+ * name's length (1 up to 7 characters, 2 up to 11, then 3), 4 when one starts the other
+ * (-vein_leaf for -vein_leaflet_ka), else OPTIONS_FAR. The same name is not close. */
+static int options_closeness(const char *unknown, const char *known) {
+  const size_t n = strlen(unknown), m = strlen(known);
+  const int d = options_distance(unknown, known), limit = n < 8 ? 1 : n < 12 ? 2 : 3;
+  if (d == 0)
+    return OPTIONS_FAR;
+  if (d <= limit)
+    return d;
+  if (n >= 5 && m >= 5 && !strncasecmp(unknown, known, PetscMin(n, m)))
+    return 4;
+  return OPTIONS_FAR;
+}
+
+PetscErrorCode options_nearest(const char *name, char *out, size_t len) {
+  const char *best[3] = {NULL, NULL, NULL};
+  int score[3] = {OPTIONS_FAR, OPTIONS_FAR, OPTIONS_FAR};
+  PetscFunctionBeginUser;
+  out[0] = 0;
+  for (size_t k = 0; k < options_n_seen; k++) {
+    const char *known = options_seen[k].name;
+    int c = options_closeness(name, known);
+    /* the three closest, ties by name: the same text on every rank */
+    for (int j = 0; j < 3 && c < OPTIONS_FAR; j++)
+      if (c < score[j] || (c == score[j] && best[j] && strcmp(known, best[j]) < 0)) {
+        const char *kn = best[j];
+        const int kc = score[j];
+        best[j] = known;
+        score[j] = c;
+        known = kn;
+        c = kc;
+      }
+  }
+  for (int j = 0; j < 3 && best[j]; j++) {
+    if (score[j] > score[0])
+      break; /* only the closest */
+    const size_t at = strlen(out);
+    const PetscBool last = j == 2 || !best[j + 1] || score[j + 1] > score[0];
+    snprintf(out + at, len - at, "%s%s", j ? (last ? " or " : ", ") : "", best[j]);
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The value of name in a "name value\n" list, or NULL; *vlen its length. */
 static const char *options_lookup(const char *list, const char *name, size_t *vlen) {
   const size_t nlen = strlen(name);

@@ -19,6 +19,8 @@ PetscErrorCode diagnostic_create(const char *name, diagnostic **out) {
                PETSC_ERR_ARG_WRONG, "diagnostic name '%s': only letters, digits and '_'", name);
   PetscCall(PetscNew(out));
   PetscCall(PetscStrncpy((*out)->name, name, sizeof((*out)->name)));
+  (*out)->sampled_step = -1;
+  (*out)->restart_sampled = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -52,7 +54,8 @@ PetscErrorCode diagnostics_add(sim *s, diagnostic *d) {
 }
 
 PetscBool diagnostic_output_time(const sim *s) {
-  return s->step == 0 || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
+  return s->step == 0 || s->final_output || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE
+                                                                                   : PETSC_FALSE;
 }
 
 PetscBool diagnostic_is_due(const diagnostic *d, const sim *s) {
@@ -66,15 +69,35 @@ PetscBool diagnostic_is_due(const diagnostic *d, const sim *s) {
   return d->due ? d->due(d, s) : PETSC_FALSE;
 }
 
+/* One sample under its log event; csv_open, if it opens a file now, learns whether the rows at
+ * the restart's time are this diagnostic's (io_state.csv_keep_restart_rows). */
+static PetscErrorCode diagnostic_sample_one(diagnostic *d, sim *s) {
+  PetscFunctionBeginUser;
+  s->io.csv_keep_restart_rows = d->restart_sampled;
+  PetscCall(PetscLogEventBegin(d->event, 0, 0, 0, 0));
+  PetscCall(d->sample(d, s));
+  PetscCall(PetscLogEventEnd(d->event, 0, 0, 0, 0));
+  s->io.csv_keep_restart_rows = PETSC_TRUE;
+  d->sampled_step = s->step;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode diagnostics_sample(sim *s) {
   PetscFunctionBeginUser;
   for (int k = 0; k < s->n_diagnostics; k++) {
     diagnostic *d = s->diagnostics[k];
-    if (!diagnostic_is_due(d, s))
-      continue;
-    PetscCall(PetscLogEventBegin(d->event, 0, 0, 0, 0));
-    PetscCall(d->sample(d, s));
-    PetscCall(PetscLogEventEnd(d->event, 0, 0, 0, 0));
+    if (diagnostic_is_due(d, s))
+      PetscCall(diagnostic_sample_one(d, s));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode diagnostics_sample_final(sim *s) {
+  PetscFunctionBeginUser;
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    if (d->when.at_outputs && d->sampled_step != s->step)
+      PetscCall(diagnostic_sample_one(d, s));
   }
   PetscFunctionReturn(0);
 }

@@ -220,8 +220,10 @@ static PetscErrorCode errors_checkpoint_write(diagnostic *self, sim *s, checkpoi
 }
 
 /* error.csv keeps its header and the rows up to the checkpoint's step: rows the
- * interrupted run wrote after the checkpoint are written again as the run continues. */
-static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
+ * interrupted run wrote after the checkpoint are written again as the run continues. The
+ * row at that step stays only if the errors sampled there (at_step): else it is the final
+ * output of a run that ended at the checkpoint. */
+static PetscErrorCode errors_csv_truncate(errors *e, sim *s, PetscBool at_step) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8], line[512];
   PetscFunctionBeginUser;
   PetscCall(io_output_path(s, "error.csv", path, sizeof(path)));
@@ -234,7 +236,8 @@ static PetscErrorCode errors_csv_truncate(errors *e, sim *s) {
   int ok = 1, first = 1;
   while (ok && fgets(line, sizeof(line), in)) {
     long long step;
-    const int keep = first ? 1 : sscanf(line, "%lld,", &step) == 1 && step <= (long long)s->step;
+    const long long last = (long long)s->step - (at_step ? 0 : 1);
+    const int keep = first ? 1 : sscanf(line, "%lld,", &step) == 1 && step <= last;
     if (first && strncmp(line, "step,", 5))
       ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
     if (keep)
@@ -270,7 +273,7 @@ static PetscErrorCode errors_checkpoint_read(diagnostic *self, sim *s, checkpoin
   PetscCall(checkpoint_get_reals(io, "errors_linf", e->linf, e->next_report));
   PetscCall(checkpoint_get_reals(io, "errors_wall_s", e->wall_s, e->next_report));
   if (s->rank == 0)
-    PetscCall(errors_csv_truncate(e, s));
+    PetscCall(errors_csv_truncate(e, s, self->restart_sampled));
   PetscFunctionReturn(0);
 }
 

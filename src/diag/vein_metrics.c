@@ -4,7 +4,10 @@
  * At every output time (and t = 0), a row of <output_dir>/vein.csv:
  *   t; u_mean, u_centre: the liquid's mean v_x over the cross-section at the
  *   inlet station (x = 0, the middle of the straight part, |x| < dx) and its
- *   mean v_x within dx of the axis there [m/s]; the tips (mid-point of each
+ *   mean v_x within dx of the axis there [m/s]; u_flux: the liquid's volume
+ *   flux (sum of V v_x over the whole period, V = m/rho, divided by the period
+ *   length) over the width W, the station's mean for an incompressible liquid,
+ *   without the sampling noise and acoustic pulses of a slab [m/s]; the tips (mid-point of each
  *   leaflet's last column) and the gap between them [m]; crossings; the
  *   sinus-side peak: the largest total stress |sigma| (stress.c) among the
  *   liquid that started in the sinus and now lies within 2 dx of a leaflet's
@@ -35,7 +38,8 @@
 #include "dmhs/liquid_state.h"
 #include "vein_leaflets.h"
 
-#define VEIN_FIXED 1e-12 /* fixed-point unit of velocity sums [m/s] */
+#define VEIN_FIXED      1e-12 /* fixed-point unit of velocity sums [m/s] */
+#define VEIN_FIXED_FLUX 1e-15 /* fixed-point unit of one particle's share of u_flux [m/s] */
 
 typedef struct vein_metrics {
   vein_layout lay;
@@ -48,7 +52,7 @@ typedef struct vein_metrics {
   PetscInt n_hist, cap_hist;
   double (*hist)[3]; /* per output row after the choice: t, |sigma|, |x - x0| */
   /* running extremes (replicated) */
-  double u_mean_peak1, u_centre_peak1, u_mean_peak, u_centre_peak;
+  double u_mean_peak1, u_centre_peak1, u_mean_peak, u_centre_peak, u_flux_peak1, u_flux_peak;
   double gap_min, gap_max, rho_dev_max, mach_max;
   FILE *csv, *sinus;
 } vein_metrics;
@@ -77,6 +81,20 @@ static PetscErrorCode vein_station(vein_metrics *v, sim *s, double *u_mean, doub
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, acc, 4, MPIU_INT64, MPI_SUM, s->comm));
   *u_mean = acc[0] ? (double)acc[1] * VEIN_FIXED / (double)acc[0] : 0;
   *u_centre = acc[2] ? (double)acc[3] * VEIN_FIXED / (double)acc[2] : 0;
+  PetscFunctionReturn(0);
+}
+
+/* The liquid's volume flux over the period as a mean velocity across the channel's width. */
+static PetscErrorCode vein_flux(vein_metrics *v, sim *s, double *u_flux) {
+  const particles *ps = &s->ps;
+  const double scale = 1.0 / ((s->dom.hi[0] - s->dom.lo[0]) * v->lay.width * VEIN_FIXED_FLUX);
+  PetscInt64 acc = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ps->n_owned; i++)
+    if (ps->type[i] == PTYPE_FLUID)
+      acc += (PetscInt64)llround(ps->mass[i] / ps->rho[i] * ps->v[i][0] * scale);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &acc, 1, MPIU_INT64, MPI_SUM, s->comm));
+  *u_flux = (double)acc * VEIN_FIXED_FLUX;
   PetscFunctionReturn(0);
 }
 
@@ -213,10 +231,11 @@ static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
     PetscFunctionReturn(0);
   PetscCall(vein_leaflets_gather(&v->leaves, s));
   PetscCall(stress_compute(s));
-  double u_mean = 0, u_centre = 0, peak = 0, probe_stress = 0, probe_disp = 0, rho_dev = 0,
-         mach = 0, tip[2][2];
+  double u_mean = 0, u_centre = 0, u_flux = 0, peak = 0, probe_stress = 0, probe_disp = 0,
+         rho_dev = 0, mach = 0, tip[2][2];
   PetscInt64 peak_gid = -1;
   PetscCall(vein_station(v, s, &u_mean, &u_centre));
+  PetscCall(vein_flux(v, s, &u_flux));
   PetscCall(vein_sinus_peak(v, s, &peak, &peak_gid));
   PetscCall(liquid_state_bounds(s, &rho_dev, &mach));
   PetscCall(vein_crossings_total(v->crossings_check, s, &v->crossings));
@@ -238,9 +257,11 @@ static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
   v->mach_max = PetscMax(v->mach_max, mach);
   v->u_mean_peak = PetscMax(v->u_mean_peak, fabs(u_mean));
   v->u_centre_peak = PetscMax(v->u_centre_peak, fabs(u_centre));
+  v->u_flux_peak = PetscMax(v->u_flux_peak, fabs(u_flux));
   if (T <= 0 || s->t <= T + 0.5 * s->dt) {
     v->u_mean_peak1 = PetscMax(v->u_mean_peak1, fabs(u_mean));
     v->u_centre_peak1 = PetscMax(v->u_centre_peak1, fabs(u_centre));
+    v->u_flux_peak1 = PetscMax(v->u_flux_peak1, fabs(u_flux));
   }
   if (T > 0 && s->t >= v->next_cycle * T - 0.5 * s->dt) {
     PetscCall(vein_write_sinus(v, s, v->next_cycle));
@@ -253,7 +274,7 @@ static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
           header, sizeof(header),
           "# vein: leaflet %g m, g0 %g m/s^2, k_a %g J (at dx = 1e-4 m), T %g s, dx %g m, rest "
           "gap %g m\nt,u_mean,u_centre,tip_upper_x,tip_upper_y,tip_lower_x,tip_lower_y,gap,"
-          "crossings,peak_stress,peak_gid,probe_gid,probe_stress,probe_disp,rho_dev,mach\n",
+          "crossings,peak_stress,peak_gid,probe_gid,probe_stress,probe_disp,rho_dev,mach,u_flux\n",
           v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx, v->lay.rest_gap));
       PetscCall(csv_open(s, "vein.csv", header, &v->csv));
     }
@@ -271,9 +292,9 @@ static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
     vein_csv_real(pr_d, sizeof(pr_d), v->probe_gid >= 0, probe_disp);
     PetscCall(csv_row(v->csv, "vein.csv",
                       "%.8g,%.8g,%.8g,%.9g,%.9g,%.9g,%.9g,%.8g,%" PetscInt64_FMT
-                      ",%s,%s,%s,%s,%s,%.6g,%.6g\n",
+                      ",%s,%s,%s,%s,%s,%.6g,%.6g,%.8g\n",
                       s->t, u_mean, u_centre, tip[0][0], tip[0][1], tip[1][0], tip[1][1], gap,
-                      v->crossings, ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach));
+                      v->crossings, ps_s, pg_s, pr_g, pr_s, pr_d, rho_dev, mach, u_flux));
   }
   PetscFunctionReturn(0);
 }
@@ -321,8 +342,9 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
   PetscCall(PetscPrintf(
       s->comm,
       "vein: peak inlet velocity (station x = 0) mean %.4g m/s, centreline %.4g m/s over the first "
-      "cycle (%.4g, %.4g m/s over the run)\n",
-      v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak));
+      "cycle (%.4g, %.4g m/s over the run); flux mean %.4g m/s (%.4g m/s over the run)\n",
+      v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak, v->u_flux_peak1,
+      v->u_flux_peak));
   PetscCall(PetscPrintf(
       s->comm,
       "vein: gap between the tips %.4g .. %.4g m (rest %.4g m); crossings %" PetscInt64_FMT
@@ -351,21 +373,21 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
     vein_csv_real(b, sizeof(b), v->n_hist > 0, disp_std);
     vein_csv_real(c, sizeof(c), n_cycles > 0, peak_mean);
     vein_csv_real(d, sizeof(d), n_cycles > 0, peak_std);
-    int ok =
-        fprintf(f,
-                "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%."
-                "6g\nnu,%.6g\nt_end,%.8g\n"
-                "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_"
-                "centre_peak,%.6g\n"
-                "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT
-                "\nrho_dev_max,%.6g\n"
-                "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT
-                "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
-                "peak_stress_std,%s\nn_cycles,%" PetscInt_FMT "\n",
-                v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx,
-                sph_params_get(s)->nu, s->t, v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak,
-                v->u_centre_peak, v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings,
-                v->rho_dev_max, v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
+    int ok = fprintf(f,
+                     "key,value\nleaflet_length,%.6g\ng0,%.6g\nka_ref,%.6g\nperiod,%.6g\ndx,%."
+                     "6g\nnu,%.6g\nt_end,%.8g\n"
+                     "u_mean_peak_cycle1,%.6g\nu_centre_peak_cycle1,%.6g\nu_mean_peak,%.6g\nu_"
+                     "centre_peak,%.6g\nu_flux_peak_cycle1,%.6g\nu_flux_peak,%.6g\n"
+                     "gap_rest,%.6g\ngap_min,%.6g\ngap_max,%.6g\ncrossings,%" PetscInt64_FMT
+                     "\nrho_dev_max,%.6g\n"
+                     "mach_max,%.6g\nprobe_gid,%" PetscInt64_FMT
+                     "\ndisp_mean,%s\ndisp_std,%s\npeak_stress_mean,%s\n"
+                     "peak_stress_std,%s\nn_cycles,%" PetscInt_FMT "\n",
+                     v->lay.leaflet_length, v->lay.g0, v->lay.ka_ref, T, v->lay.dx,
+                     sph_params_get(s)->nu, s->t, v->u_mean_peak1, v->u_centre_peak1,
+                     v->u_mean_peak, v->u_centre_peak, v->u_flux_peak1, v->u_flux_peak,
+                     v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings, v->rho_dev_max,
+                     v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
     ok = (fclose(f) == 0) && ok;
     PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
     PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
@@ -382,12 +404,13 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
 static PetscErrorCode vein_metrics_checkpoint_write(diagnostic *self, sim *s, checkpoint_io *io) {
   vein_metrics *v = self->data;
   const PetscInt64 ints[4] = {v->crossings, v->probe_gid, v->next_cycle, v->n_hist};
-  const double reals[8] = {v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
-                           v->gap_min,      v->gap_max,        v->rho_dev_max, v->mach_max};
+  const double reals[10] = {v->u_mean_peak1, v->u_centre_peak1, v->u_mean_peak, v->u_centre_peak,
+                            v->gap_min,      v->gap_max,        v->rho_dev_max, v->mach_max,
+                            v->u_flux_peak1, v->u_flux_peak};
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(checkpoint_put_ints(io, "vein_ints", ints, 4));
-  PetscCall(checkpoint_put_reals(io, "vein_reals", reals, 8));
+  PetscCall(checkpoint_put_reals(io, "vein_reals", reals, 10));
   if (v->n_hist) {
     PetscCall(checkpoint_put_reals(io, "vein_hist", &v->hist[0][0], 3 * v->n_hist));
   }
@@ -397,10 +420,10 @@ static PetscErrorCode vein_metrics_checkpoint_write(diagnostic *self, sim *s, ch
 static PetscErrorCode vein_metrics_checkpoint_read(diagnostic *self, sim *s, checkpoint_io *io) {
   vein_metrics *v = self->data;
   PetscInt64 ints[4];
-  double reals[8];
+  double reals[10];
   PetscFunctionBeginUser;
   PetscCall(checkpoint_get_ints(io, "vein_ints", ints, 4));
-  PetscCall(checkpoint_get_reals(io, "vein_reals", reals, 8));
+  PetscCall(checkpoint_get_reals(io, "vein_reals", reals, 10));
   (void)s;
   v->crossings = ints[0]; /* at the last output (the count itself is "vein_crossings") */
   v->probe_gid = ints[1];
@@ -414,6 +437,8 @@ static PetscErrorCode vein_metrics_checkpoint_read(diagnostic *self, sim *s, che
   v->gap_max = reals[5];
   v->rho_dev_max = reals[6];
   v->mach_max = reals[7];
+  v->u_flux_peak1 = reals[8];
+  v->u_flux_peak = reals[9];
   PetscCall(PetscFree(v->hist));
   v->n_hist = v->cap_hist = n;
   if (n) {

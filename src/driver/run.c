@@ -6,7 +6,9 @@
  * + pair list
  *   -> modules' compute (forces, density rates) -> second kick
  *   -> state check (stop before any NaN is written) -> modules' and scene's post_step
- *   -> the due diagnostics (each on its own schedule, diagnostic.h) -> output -> progress */
+ *   -> the due diagnostics (each on its own schedule, diagnostic.h) -> output -> progress
+ *   -> checkpoint at the interval, or on a stop signal (and stop)
+ * After the loop, a final output when the last step was not an output time. */
 #include <errno.h>
 #include <string.h>
 #include <unistd.h>
@@ -23,6 +25,7 @@
 #include "dmhs/progress.h"
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
+#include "dmhs/stop_signal.h"
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
                                               NULL};
@@ -79,21 +82,29 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   PetscInt n;
   char **names, **values;
   PetscFunctionBeginUser;
+  char first[256] = "", first_hint[600] = "", more[64] = "";
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
-  for (PetscInt k = 0; k < n; k++)
+  for (PetscInt k = 0; k < n; k++) {
+    char name[256], near[512], hint[600] = "";
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-%s", names[k]));
+    PetscCall(options_nearest(name, near, sizeof(near))); /* the options this run read */
+    if (near[0])
+      PetscCall(PetscSNPrintf(hint, sizeof(hint), " (did you mean %s?)", near));
     PetscCall(PetscPrintf(s->comm,
-                          "dmhs: option -%s %s was not used by scene '%s' or its modules\n",
-                          names[k], values[k] ? values[k] : "", s->scn->name));
+                          "dmhs: option %s %s was not used by scene '%s' or its modules%s\n", name,
+                          values[k] ? values[k] : "", s->scn->name, hint));
+    if (k == 0) {
+      PetscCall(PetscStrncpy(first, name, sizeof(first)));
+      PetscCall(PetscStrncpy(first_hint, hint, sizeof(first_hint)));
+    }
+  }
   const PetscInt n_unused = n;
-  const PetscBool clean = n == 0 ? PETSC_TRUE : PETSC_FALSE;
-  const char *first = n ? names[0] : "";
-  char first_copy[256];
-  PetscCall(PetscStrncpy(first_copy, first, sizeof(first_copy)));
+  if (n_unused > 1)
+    PetscCall(PetscSNPrintf(more, sizeof(more), " and %" PetscInt_FMT " more", n_unused - 1));
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
-  PetscCheck(clean, s->comm, PETSC_ERR_ARG_WRONG,
-             "unknown or unused option -%s (and %" PetscInt_FMT
-             " more); run with -help to list the options",
-             first_copy, n_unused - 1);
+  PetscCheck(n_unused == 0, s->comm, PETSC_ERR_ARG_WRONG,
+             "unknown or unused option %s%s%s; run with -help to list the options", first,
+             first_hint, more);
   PetscFunctionReturn(0);
 }
 
@@ -183,6 +194,9 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   s->comm = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &s->rank));
   PetscCallMPI(MPI_Comm_size(comm, &s->size));
+  /* io: from now on a stop signal waits for the first safe point (step 0) */
+  PetscCall(stop_signal_install(s->rank));
+  s->last_output_step = -1;
   s->t_end = 1.0;
   s->skin_ratio = 0.1;
   s->preflight = PREFLIGHT_ERROR;
@@ -253,8 +267,27 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscFunctionReturn(0);
 }
 
+/* The state the run ends with, when its last step was not an output time (a shortened
+ * -t_end, a stop signal): the end checkpoint first, so that a run continued from it never
+ * sees what follows, then the at-output diagnostics' rows and a snapshot in the XDMF. */
+static PetscErrorCode sim_final_output(sim *s) {
+  PetscFunctionBeginUser;
+  if (s->last_output_step == s->step)
+    PetscFunctionReturn(0);
+  PetscCall(io_checkpoint_at_end(s));
+  s->final_output = PETSC_TRUE;
+  PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
+  PetscCall(diagnostics_sample_final(s));
+  PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+  PetscCall(io_output(s));
+  s->final_output = PETSC_FALSE;
+  s->last_output_step = s->step;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sim_run(sim *s) {
   PetscInt n_owned_global, n_local = s->ps.n_owned;
+  PetscBool stop; /* io: checkpoint at the interval; on a stop signal also stop */
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscLogStagePush(events.stage_steps));
@@ -264,10 +297,13 @@ PetscErrorCode sim_run(sim *s) {
     PetscCall(diagnostics_sample(s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
     PetscCall(io_output(s));
+    s->last_output_step = s->step;
   }
   s->loop_start_wtime = MPI_Wtime();
+  /* a signal during the setup stops here, with a checkpoint of the initial state */
+  PetscCall(io_after_step(s, &stop));
   /* stop at the step nearest t_end */
-  while (s->t < s->t_end - 0.5 * s->dt) {
+  while (!stop && s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
     PetscCall(integrate_first_half(s));
     if (s->ts.subcycling)
@@ -290,18 +326,17 @@ PetscErrorCode sim_run(sim *s) {
     if (s->t >= s->next_output_t - 0.5 * s->dt) {
       PetscCall(io_output(s)); /* io: snapshot + XDMF */
       s->next_output_t += s->output_interval;
+      s->last_output_step = s->step;
     }
     if (s->t >= s->next_progress_t - 0.5 * s->dt) {
       if (!s->quiet)
         PetscCall(progress_print(s));
       s->next_progress_t += s->progress_interval;
     }
-    PetscBool stop; /* io: checkpoint at the interval; on SIGTERM/SIGUSR1 also stop */
     PetscCall(io_after_step(s, &stop));
-    if (stop)
-      break;
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
+  PetscCall(sim_final_output(s));
   PetscCall(PetscLogStagePop());
   PetscCall(diagnostics_finish(s));
   PetscCall(progress_summary(s));

@@ -276,6 +276,14 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_int64s(tmp, fid, "solid_substeps", &n_sub, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
+    /* which diagnostics sampled at this step: a restart keeps only their rows at its time
+     * (a run that ends here samples the others once more after this checkpoint) */
+    if (s->n_diagnostics) {
+      PetscInt64 sampled[SIM_MAX_DIAGNOSTICS];
+      for (int k = 0; k < s->n_diagnostics; k++)
+        sampled[k] = s->diagnostics[k]->sampled_step == s->step;
+      PetscCall(h5io_put_int64s(tmp, fid, "diagnostics_sampled", sampled, s->n_diagnostics));
+    }
   }
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {
@@ -364,6 +372,23 @@ static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t
       "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n", path,
       n_changed, report));
   PetscCall(PetscStrallocpy(report, &s->io.restart_changes));
+  PetscFunctionReturn(0);
+}
+
+/* Which diagnostics sampled at the checkpoint's step (diagnostic.h: restart_sampled); a
+ * checkpoint without the record: all of them, as before it was kept. */
+static PetscErrorCode checkpoint_read_sampled(sim *s, const char *path, hid_t fid) {
+  PetscInt64 sampled[SIM_MAX_DIAGNOSTICS];
+  PetscBool has;
+  PetscFunctionBeginUser;
+  PetscCall(h5io_has_attr(path, fid, "diagnostics_sampled", &has));
+  if (has && s->n_diagnostics)
+    PetscCall(h5io_get_int64s(path, fid, "diagnostics_sampled", sampled, s->n_diagnostics));
+  for (int k = 0; k < s->n_diagnostics; k++) {
+    diagnostic *d = s->diagnostics[k];
+    d->restart_sampled = !has || sampled[k] ? PETSC_TRUE : PETSC_FALSE;
+    d->sampled_step = d->restart_sampled ? s->step : -1;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -479,6 +504,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
              "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
   s->step = (PetscInt)step;
   s->io.snapshot_index = (PetscInt)snapshot_index;
+  PetscCall(checkpoint_read_sampled(s, path, fid));
 
   /* the structure (before the modules' state, which may refer to it) */
   if (s->topo)

@@ -53,8 +53,11 @@ static int csv_truncate(const char *path, const char *tmp, double t_keep, int *f
 }
 
 PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out) {
+  /* rows at the checkpoint's time belong to the run only if its diagnostic sampled there:
+   * otherwise they are the final output of a run that stopped at the checkpoint */
+  const double keep = s->io.restart_t + (s->io.csv_keep_restart_rows ? 0.5 : -0.5) * s->dt;
   PetscFunctionBeginUser;
-  PetscCall(csv_open_keeping(s, name, header, s->io.restart_t + 0.5 * s->dt, out));
+  PetscCall(csv_open_keeping(s, name, header, keep, out));
   PetscFunctionReturn(0);
 }
 

@@ -1,10 +1,11 @@
 /* Output, checkpoints, restart and the run record: the glue between the step
  * loop (sim.c) and snapshot.c, xdmf.c, checkpoint.c.
  *
- * Signals: SIGTERM and SIGUSR1 (what batch systems send before the time
- * limit) only set a flag; after every step the ranks agree on it with one
- * MPI_Allreduce, write a checkpoint and stop cleanly. The handlers are
- * one-shot (SA_RESETHAND): a second SIGTERM kills as usual.
+ * Signals: SIGTERM, SIGINT and SIGUSR1 (what batch systems, timeout, mpirun and
+ * Ctrl-C send) only set a flag (stop_signal.c, which also says when a repeat
+ * kills); after every step, and before the first, the ranks agree on it with
+ * one MPI_Allreduce (a signal any one rank got stops them all), write a
+ * checkpoint, record "signal-checkpoint" in run.json and stop cleanly.
  *
  * run.json (rank 0, rewritten atomically): dmhs_version, scene, ranks,
  * options, restart_from, start, end (ISO 8601 UTC), status ("running",
@@ -14,7 +15,6 @@
  * loop has ended, halo (the sizes of the last neighbour build over the ranks:
  * halo_stats.c). */
 #include <errno.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,18 +28,9 @@
 #include "dmhs/xdmf.h"
 #include "dmhs/migrate.h"
 #include "dmhs/integrate.h"
+#include "dmhs/stop_signal.h"
 #include "h5check.h"
 #include "outdir.h"
-
-static volatile sig_atomic_t io_signal_received = 0;
-
-static void io_on_signal(int sig) {
-  io_signal_received = sig;
-}
-
-static const char *io_signal_name(int sig) {
-  return sig == SIGTERM ? "SIGTERM" : sig == SIGUSR1 ? "SIGUSR1" : "a signal";
-}
 
 PetscErrorCode io_set_from_options(sim *s) {
   io_state *io = &s->io;
@@ -47,6 +38,7 @@ PetscErrorCode io_set_from_options(sim *s) {
   io->snapshots = PETSC_TRUE;
   io->checkpoint_at_end = PETSC_TRUE;
   io->last_checkpoint_step = -1;
+  io->csv_keep_restart_rows = PETSC_TRUE;
   PetscOptionsBegin(s->comm, NULL, "Output, checkpoints and restart", NULL);
   PetscCall(PetscOptionsBool(
       "-output_snapshots",
@@ -247,7 +239,6 @@ static void io_previous_status(const char *dir, char *status, size_t len) {
 
 PetscErrorCode io_setup(sim *s) {
   io_state *io = &s->io;
-  struct sigaction sa;
   PetscFunctionBeginUser;
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
@@ -268,13 +259,8 @@ PetscErrorCode io_setup(sim *s) {
   io->run_json_started = PETSC_TRUE;
   if (s->rank == 0)
     PetscCall(xdmf_create(&io->xdmf));
-  memset(&sa, 0, sizeof(sa));
-  sa.sa_handler = io_on_signal;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESTART | SA_RESETHAND;
-  PetscCheck(sigaction(SIGTERM, &sa, NULL) == 0 && sigaction(SIGUSR1, &sa, NULL) == 0,
-             PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the SIGTERM/SIGUSR1 handlers: %s",
-             strerror(errno));
+  /* normally in place since sim_create began: a signal during the setup waits for step 0 */
+  PetscCall(stop_signal_install(s->rank));
   PetscFunctionReturn(0);
 }
 
@@ -356,7 +342,7 @@ static PetscErrorCode io_checkpoint(sim *s) {
 
 PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
   io_state *io = &s->io;
-  int mine = io_signal_received, any;
+  int mine = stop_signal_pending(), any;
   PetscBool due = PETSC_FALSE;
   PetscFunctionBeginUser;
   *stop = PETSC_FALSE;
@@ -374,20 +360,29 @@ PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
     PetscCall(io_output_path(s, "checkpoint.h5", path, sizeof(path)));
     io->stop_signal = any;
     *stop = PETSC_TRUE;
+    /* recorded at once: a further signal may now kill the run (stop_signal.c) */
+    PetscCall(io_run_json(s, "signal-checkpoint", PETSC_FALSE));
+    stop_signal_checkpoint_written();
     PetscCall(PetscPrintf(s->comm,
                           "dmhs: received %s: stopped at step %" PetscInt_FMT
                           ", t = %.9g s after writing the "
                           "checkpoint %s; continue with -restart %s\n",
-                          io_signal_name(any), s->step, s->t, path, path));
+                          stop_signal_name(any), s->step, s->t, path, path));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_checkpoint_at_end(sim *s) {
+  PetscFunctionBeginUser;
+  if (s->io.checkpoint_at_end && s->io.last_checkpoint_step != s->step)
+    PetscCall(io_checkpoint(s));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode io_finish(sim *s) {
   io_state *io = &s->io;
   PetscFunctionBeginUser;
-  if (io->checkpoint_at_end && io->last_checkpoint_step != s->step)
-    PetscCall(io_checkpoint(s));
+  PetscCall(io_checkpoint_at_end(s));
   PetscCall(
       halo_stats_gather(&s->hal, &s->ps, s->ghost_step_fields, s->n_ghost_step_fields, &io->halo));
   io->halo_known = PETSC_TRUE;

@@ -13,15 +13,18 @@
  *   liquid        the lattice (i + 1/2, j + 1/2) dx inside, at least dx/2 from
  *                 the surface;
  *   walls         -vein_wall_layers layers: lattice points outside, between
- *                 0.45 dx and (layers + 0.45) dx from the surface (a band as
- *                 wide as the layers; on a straight wall exactly the layers at
- *                 dx/2, 3dx/2, ...), so no wall particle is closer than 0.95 dx
- *                 to a liquid one;
+ *                 0.45 dx and (layers + 0.45) dx from the surface (on a
+ *                 straight wall exactly the layers at dx/2, 3dx/2, ...). Along
+ *                 the sinus's curve this leaves about one lattice row empty
+ *                 (liquid and walls 2 dx apart); walls reaching the surface,
+ *                 or the liquid, made the liquid's mean pressure grow until
+ *                 the flow stopped (doc/validation.md, "Vein");
  *   leaflets      two-layer mass-spring strips (solid_strip.h) of
  *                 round(L/dx) free columns, whose mid-plane starts at the
  *                 root (x_c - A, +-W/2) at the angle theta to the axis, with
  *                 sin(theta) = (W/2 - gap/2)/L (-vein_leaflet_gap: the tips'
- *                 rest distance) unless -vein_leaflet_angle gives theta; one
+ *                 rest distance at dx = 1e-4 m, below) unless
+ *                 -vein_leaflet_angle gives theta; one
  *                 clamped column (fixed particles) at the root. Liquid and wall
  *                 lattice points closer than dx to a leaflet particle are left
  *                 out (no repulsion at t = 0).
@@ -29,8 +32,12 @@
  * dx_ref = 1e-4 m so that a coarse run is the same valve: h = 2.5 dx, masses
  * ~ dx^2, repulsion r* = dx and K ~ dx^2 (repulsion balances pressure x dx),
  * bonds r0 = dx and K ~ dx^-3, angles k_a ~ dx^-1 (both keep the leaflet's
- * bending stiffness EI = K r0^3 + 2 k_a r0, doc/theory.md). -bond_k, -angle_k,
- * -repulsion_k given explicitly are used as they are.
+ * bending stiffness EI = K r0^3 + 2 k_a r0, doc/theory.md). A leaflet is two
+ * layers, 2 dx thick: the tips' rest distance grows by 2 (dx - dx_ref) so that
+ * the clear opening between their faces is the published one at every dx (at
+ * dx = 4e-4 m a 1 mm gap left 0.2 mm, and the valve opened 0.3 s later than
+ * at 2e-4 m). -bond_k, -angle_k, -repulsion_k given explicitly are used as
+ * they are.
  * Diagnostics: "vein_crossings" and "vein" (vein_metrics.h). */
 #include <math.h>
 #include <string.h>
@@ -134,7 +141,9 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCall(PetscOptionsReal("-vein_leaflet_length",
                              "Leaflet length L [m] (0.0256, 0.0175, 0.01 in the study)", NULL,
                              v->leaflet_length, &v->leaflet_length, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_gap", "Rest distance between the two leaflet tips [m]",
+  PetscCall(PetscOptionsReal("-vein_leaflet_gap",
+                             "Rest distance between the two leaflet tips at dx = 1e-4 m [m] (plus "
+                             "2 (dx - 1e-4 m): the same clear opening at every dx)",
                              NULL, v->leaflet_gap, &v->leaflet_gap, NULL));
   PetscCall(PetscOptionsReal("-vein_leaflet_angle",
                              "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)",
@@ -205,9 +214,9 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
    * delta-SPH diffusion damps it without adding shear viscosity (doc/theory.md) */
   sp->delta = 0.1;
   /* a liquid particle drawn into the gap between the sinus's curved wall and the
-   * liquid (a lattice row that is neither: liquid keeps dx/2 from the surface,
-   * walls 0.45 dx) keeps one or two liquid neighbours among eight walls: it
-   * rings against the walls' pressure (omega ~ 2e4 rad/s at dx = 5e-4 m) without
+   * liquid (the lattice row left empty there) keeps one or two liquid
+   * neighbours among eight walls: it rings against the walls' pressure (omega
+   * ~ 2e4 rad/s at dx = 5e-4 m) without
    * the diffusion above, which does not act on wall pairs, and the half-step
    * density of the kick amplifies that at omega^2 dt/4 (measured at dt = 4e-6 s:
    * |rho/rho0 - 1| 6.5 % at t = 0.17 s, a pressure pulse that moved the tips by
@@ -216,9 +225,12 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   sp->density_predict = PETSC_TRUE;
   /* behind the valve the jet's shear brings liquid particles together faster
    * than the blood's viscosity resolves at these spacings (pairs at 0.12 dx and
-   * +-1e4 Pa spikes measured at dx = 5e-4 m); a weak Monaghan viscosity
-   * (effective nu ~ alpha c0 h/8 = 3e-6 m^2/s at dx = 1e-4 m) stops it */
-  sp->av_alpha = 0.01;
+   * +-1e4 Pa spikes measured at dx = 5e-4 m); a weak Monaghan viscosity stops
+   * it. Its effective viscosity alpha c0 h/8 grows with h: alpha falls as 1/dx
+   * so that it stays 3e-6 m^2/s at every dx, as at the published dx = 1e-4 m
+   * with alpha = 0.01 (a fixed alpha took 20 % off the peak inlet velocity at
+   * dx = 4e-4 m, where it is 4x stronger: doc/validation.md, "Vein") */
+  sp->av_alpha = 0.01 / r;
   PetscCall(fields_enable("body"));
   PetscCall(fields_enable("side"));
   PetscCall(fields_enable("tracer")); /* the liquid that starts in the sinus */
@@ -363,11 +375,12 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
   const PetscInt n_free = (PetscInt)floor(v->leaflet_length / dx + 0.5);
   double theta = v->leaflet_angle_deg * M_PI / 180.0;
   if (v->leaflet_angle_deg == 0) {
-    const double sn = (0.5 * v->width - 0.5 * v->leaflet_gap) / (n_free * dx);
-    PetscCheck(sn > 0 && sn < 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "vein: a leaflet of %g m cannot leave a gap of %g m in a channel of %g m (set "
-               "-vein_leaflet_angle)",
-               v->leaflet_length, v->leaflet_gap, v->width);
+    const double gap = v->leaflet_gap + 2 * (dx - VEIN_DX_REF);
+    const double sn = (0.5 * v->width - 0.5 * gap) / (n_free * dx);
+    PetscCheck(gap >= 0 && sn > 0 && sn < 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "vein: a leaflet of %g m cannot leave a gap of %g m (-vein_leaflet_gap %g m at dx "
+               "= 1e-4 m) in a channel of %g m (set -vein_leaflet_angle)",
+               v->leaflet_length, gap, v->leaflet_gap, v->width);
     theta = asin(sn);
   }
   s->dom.lo[0] = 0;

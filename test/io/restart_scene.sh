@@ -40,14 +40,6 @@ grep -q "Restarted from $W/b/checkpoint.h5" "$W/b2.log" || die "no restart messa
 grep -q '"status": "completed"' "$W/b/run.json" || die "b/run.json does not say completed"
 echo "== $NP_REF ranks to t = $T_END s against $NP_FIRST ranks to $HALF s + restart on $NP_SECOND ranks" \
   "$([ $PAST = 1 ] && echo "(the first run went on past its checkpoint)")"
-files() { (cd "$1" && ls | grep -v '^run\.json$' | sort); }
-[ "$(files "$W/a")" = "$(files "$W/b")" ] || { diff <(files "$W/a") <(files "$W/b"); die "different sets of output files"; }
-for f in $(files "$W/a"); do
-  case $f in
-  *.h5) "$PY" "$HERE/compare_by_gid.py" "$W/a/$f" "$W/b/$f" | tail -1 ;;
-  *.csv) "$PY" "$HERE/compare_csv.py" "$W/a/$f" "$W/b/$f" ;;
-  *.xdmf) cmp "$W/a/$f" "$W/b/$f" && echo "$f: identical" ;;
-  *) die "unexpected output file $f" ;;
-  esac || die "$f differs after the restart"
-done
+. "$HERE/compare_dirs.sh"
+compare_dirs "$W/a" "$W/b"
 echo "restart equivalence ($NP_FIRST -> $NP_SECOND ranks): OK"

@@ -7,7 +7,10 @@
   falls below --close x the rest gap while it goes backward; the upper tip
   stays above the lower one (the leaflets never pass through each other);
   no fluid particle crossed a leaflet; max |rho/rho0 - 1| <= --max-rho-dev
-  and max Mach <= --max-mach in every row; the measurement point was chosen.
+  and max Mach <= --max-mach in every row; the measurement point was chosen;
+  u_flux (the volume flux over the width) follows the inlet slab's u_mean:
+  their RMS difference is below 15 % of the peak |u_mean| (a flux scaled by a
+  wrong length or width, or missing a part of the liquid, is not).
   With --compare DIR: vein.csv, vein-sinus.csv and vein-summary.csv are
   byte for byte those of DIR (rank-count invariance).
 --mode restart: runs to --t-stop (checkpoint), restarts from it to t_end,
@@ -38,7 +41,7 @@ def read_summary(path):
         if not math.isfinite(x):
             fail(f"{path}:{n}: non-finite {k} = {v}")
         out[k] = x
-    for k in ("gap_rest", "u_mean_peak_cycle1", "crossings", "rho_dev_max", "mach_max"):
+    for k in ("gap_rest", "u_mean_peak_cycle1", "u_flux_peak_cycle1", "crossings", "rho_dev_max", "mach_max"):
         if out.get(k) is None:
             fail(f"{path}: {k} missing")
     return out
@@ -72,6 +75,12 @@ def mode_run(args):
         fail(f"the valve did not open: largest gap in forward flow {max(fwd):.4g} m < {args.open} x rest")
     if min(bwd) > args.close * rest:
         fail(f"the valve did not close: smallest gap in backward flow {min(bwd):.4g} m > {args.close} x rest")
+    flux = col(names, rows, "u_flux")
+    rms = math.sqrt(sum((a - b) ** 2 for a, b in zip(flux, u)) / len(u))
+    peak = max(abs(v) for v in u)
+    print(f"  u_flux against u_mean: RMS difference {rms:.3g} m/s, peak |u_mean| {peak:.3g} m/s")
+    if rms > 0.15 * peak:
+        fail(f"u_flux does not follow u_mean: RMS difference {rms:.3g} m/s > 15 % of {peak:.3g} m/s")
     up, lo = col(names, rows, "tip_upper_y"), col(names, rows, "tip_lower_y")
     if any(a <= b for a, b in zip(up, lo)):
         fail("the upper tip went below the lower one: the leaflets passed through each other")

@@ -75,11 +75,37 @@ add_test(NAME validation_vein_plot_inlet
 set_tests_properties(validation_vein_plot_inlet PROPERTIES LABELS validation TIMEOUT 120
                      FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
 
+# velocity vectors in the sinus (Fig. 4.5) and the leaflets at closure, per run (Fig. 4.8)
+add_test(NAME validation_vein_plot_vectors
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_vectors.py ${DMHS_VEIN_OUT}/quick
+                 --out ${DMHS_VEIN_PLOTS}/vein_vectors.png)
+add_test(NAME validation_vein_plot_closure
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_closure.py ${DMHS_VEIN_OUT}/quick
+                 ${DMHS_VEIN_OUT}/quick-2ranks --out ${DMHS_VEIN_PLOTS}/vein_closure.png)
+set_tests_properties(validation_vein_plot_vectors validation_vein_plot_closure PROPERTIES LABELS validation
+                     TIMEOUT 120 FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean"
+                     FIXTURES_SETUP vein_plots)
+# a missing run directory: one line naming it, exit 1
+foreach(p fields sinus vectors closure convergence)
+  add_test(NAME validation_vein_plot_${p}_missing
+           COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_${p}.py ${DMHS_VEIN_OUT}/no-such-run)
+  set_tests_properties(validation_vein_plot_${p}_missing PROPERTIES LABELS validation TIMEOUT 60
+                       PASS_REGULAR_EXPRESSION "no-such-run: no such directory")
+endforeach()
+
+# one case at several spacings on common axes (here the two quick runs at one spacing)
+add_test(NAME validation_vein_plot_convergence
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_convergence.py ${DMHS_VEIN_OUT}/quick
+                 ${DMHS_VEIN_OUT}/quick-2ranks --out ${DMHS_VEIN_PLOTS}/vein_convergence.png)
+set_tests_properties(validation_vein_plot_convergence PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
+
 add_test(NAME validation_vein_plots_check
          COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_LIST_FILE}
                  ${DMHS_VEIN_PLOTS}/vein_fields.png ${DMHS_VEIN_PLOTS}/vein_sinus.png
                  ${DMHS_VEIN_PLOTS}/vein_probe.png ${DMHS_VEIN_PLOTS}/vein_geometry.png
                  ${DMHS_VEIN_PLOTS}/vein_study_ka.png ${DMHS_VEIN_PLOTS}/vein_study_velocity.png
-                 ${DMHS_VEIN_PLOTS}/vein_inlet.png)
+                 ${DMHS_VEIN_PLOTS}/vein_inlet.png ${DMHS_VEIN_PLOTS}/vein_convergence.png
+                 ${DMHS_VEIN_PLOTS}/vein_vectors.png ${DMHS_VEIN_PLOTS}/vein_closure.png)
 set_tests_properties(validation_vein_plots_check PROPERTIES LABELS validation TIMEOUT 30
                      FIXTURES_REQUIRED vein_plots)

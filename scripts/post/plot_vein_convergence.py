@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""One vein case at several spacings on common axes (convergence toward dx = 1e-4 m).
+
+  scripts/post/plot_vein_convergence.py RUNDIR [RUNDIR ...] [--out PATH] [--csv PATH]
+
+Each RUNDIR is a run of the same case at its own -vein_dx. Draws against time:
+the inlet velocity (u_flux, the volume flux over the width; u_mean of the
+inlet slab faint), the clear opening between the tips (their gap less 2 dx,
+the two leaflets' half thicknesses), both tips' x and y, and the measurement
+point's total stress and displacement. Prints, and writes to --csv
+(default <out>.csv), per completed cycle and spacing: the peak inlet
+velocity, the largest and smallest clear opening, the measurement point's
+time-averaged displacement and peak stress, and each one's difference from
+the next finer spacing that reached that cycle (relative, %).
+Writes vein_convergence.png into the first RUNDIR unless --out is given.
+"""
+import argparse
+import csv
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import vein_common as vc  # noqa: E402
+
+NEED = ("t", "u_mean", "gap", "tip_upper_x", "tip_upper_y", "tip_lower_x", "tip_lower_y",
+        "probe_stress", "probe_disp")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("rundirs", nargs="+")
+    ap.add_argument("--out", default=None, help="PNG path or directory (default: the first RUNDIR)")
+    ap.add_argument("--csv", default=None, help="table of per-cycle metrics (default: <PNG>.csv)")
+    a = ap.parse_args()
+    runs = []
+    for d in a.rundirs:
+        vc.require_dir(d)
+        cols, info = vc.read_csv(os.path.join(d, "vein.csv"), need=NEED)
+        if "dx" not in info or "T" not in info:
+            vc.fail(f"{d}/vein.csv: no dx or T in its '# vein:' comment line")
+        runs.append((info["dx"], d, cols, info))
+    runs.sort(key=lambda r: -r[0])  # coarsest first
+    fig, ax = plt.subplots(6, 1, figsize=(9, 15), sharex=True)
+    rows = []
+    for k, (dx, d, cols, info) in enumerate(runs):
+        c = f"C{k % 10}"
+        lab = f"dx = {dx * 1e3:g} mm (to t = {cols['t'][-1]:.2f} s)"
+        t = cols["t"]
+        u, uname = vc.inlet_velocity(cols)
+        ax[0].plot(t, u, color=c, label=f"{lab}, {uname}")
+        if uname != "u_mean":
+            ax[0].plot(t, cols["u_mean"], color=c, alpha=0.25, lw=0.7)
+        ax[1].plot(t, vc.clear_opening(cols, dx) * 1e3, color=c, label=lab)
+        ax[2].plot(t, cols["tip_upper_x"] * 1e3, color=c, label=f"{lab}, upper")
+        ax[2].plot(t, cols["tip_lower_x"] * 1e3, color=c, ls="--", label=f"{lab}, lower")
+        ax[3].plot(t, cols["tip_upper_y"] * 1e3, color=c, label=f"{lab}, upper")
+        ax[3].plot(t, cols["tip_lower_y"] * 1e3, color=c, ls="--", label=f"{lab}, lower")
+        ax[4].plot(t, cols["probe_stress"], color=c, label=lab)
+        ax[5].plot(t, cols["probe_disp"] * 1e3, color=c, label=lab)
+        for m in vc.cycle_metrics(cols, info["T"], dx):
+            rows.append(dict(m, dx=dx, run=d))
+    # differences from the next finer spacing that reached the same cycle
+    for r in rows:
+        finer = [q for q in rows if q["cycle"] == r["cycle"] and q["dx"] < r["dx"]]
+        ref = max(finer, key=lambda q: q["dx"]) if finer else None
+        r["vs_dx"] = ref["dx"] if ref else math.nan
+        for key, _ in vc.CYCLE_METRICS:
+            ok = ref is not None and math.isfinite(ref[key]) and ref[key] != 0 and math.isfinite(r[key])
+            r[f"{key}_diff"] = (r[key] / ref[key] - 1) if ok else math.nan
+    T = runs[0][3]["T"]
+    tmax = max(np.nanmax(r[2]["t"]) for r in runs)
+    for axis in ax:
+        for k in range(1, int(tmax / T) + 1):
+            axis.axvline(k * T, color="0.6", ls=":", lw=1)
+        axis.grid(alpha=0.3)
+    ax[0].axhline(0, color="0.5", lw=0.8)
+    ax[0].set_ylabel("inlet velocity [m/s]")
+    ax[1].set_ylabel("clear opening\ngap - 2 dx [mm]")
+    ax[2].set_ylabel("tip x [mm]")
+    ax[3].set_ylabel("tip y [mm]")
+    ax[4].set_ylabel("measurement point |σ| [Pa]")
+    ax[5].set_ylabel("measurement point\ndisplacement [mm]")
+    ax[5].set_xlabel("t [s]")
+    for axis in ax[:2]:
+        axis.legend(fontsize=7, loc="best")
+    ax[2].legend(fontsize=6, loc="best", ncol=2)
+    fig.suptitle(f"{vc.case_title({k: v for k, v in runs[0][3].items() if k != 'dx'})}: "
+                 f"spacings {', '.join(f'{r[0] * 1e3:g}' for r in runs)} mm")
+    fig.tight_layout()
+    path = vc.output_path(a.out, a.rundirs[0], "vein_convergence.png")
+    fig.savefig(path, dpi=100)
+    table = a.csv or os.path.splitext(path)[0] + ".csv"
+    keys = ["cycle", "dx", "vs_dx"] + [k for k, _ in vc.CYCLE_METRICS] + [f"{k}_diff" for k, _ in vc.CYCLE_METRICS]
+    with open(table, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(keys)
+        for r in sorted(rows, key=lambda q: (q["cycle"], -q["dx"])):
+            w.writerow([f"{r[k]:.6g}" if isinstance(r[k], float) else r[k] for k in keys])
+    print("cycle  dx[mm]  u_peak[m/s]   open_max[mm] open_min[mm] disp_mean[mm]  stress_peak[Pa]"
+          "   (difference from the next finer dx)")
+    for r in sorted(rows, key=lambda q: (q["cycle"], -q["dx"])):
+        def cell(key, scale, fmt):
+            v, dv = r[key], r[f"{key}_diff"]
+            s = "n/a" if not math.isfinite(v) else format(v * scale, fmt)
+            return s + (f" ({dv * 100:+.0f}%)" if math.isfinite(dv) else "")
+        print(f"{r['cycle']:5d}  {r['dx'] * 1e3:6g}  {cell('u_peak', 1, '.4f'):13s} "
+              f"{cell('open_max', 1e3, '.2f'):12s} {cell('open_min', 1e3, '.2f'):12s} "
+              f"{cell('disp_mean', 1e3, '.3f'):14s} {cell('stress_peak', 1, '.3g')}")
+    print(path)
+    print(table)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# The deep-vein valve study on one machine: the runs of the thesis's table
+# (input/vein-run<ID>.opts), a few at a time, each continued from its
+# checkpoint when the driver is started again after an interruption.
+#
+#   scripts/vein_study.sh                       # all 14 runs, 2 at a time on 1 rank each
+#   scripts/vein_study.sh --ids "1 2 3" --jobs 1 --ranks 2
+#   scripts/vein_study.sh --collect bench/results/vein-study   # copy the finished runs' CSVs
+#
+# Options:
+#   --ids "ID ..."    runs of the table (default: 1 2 3 4 5 6 8 19 24 25 29 30 31 32)
+#   --jobs J          runs at a time (default 2)
+#   --ranks N         MPI ranks per run (default 1)
+#   --out DIR         runs' output directories DIR/run<ID> (default $HOME/dmhs-runs/vein-study)
+#   --study FILE      options file added after each run's input (default input/vein-study.opts:
+#                     the study's spacing; give --study none for the published dx = 1e-4 m)
+#   --collect DEST    no run: copy vein-summary.csv, vein.csv (every 5th row), vein-sinus.csv
+#                     (cycle ends only) and run.json of every completed run into DEST/run<ID>/
+#   -- OPTIONS        further dmhs options for every run (e.g. -- -t_end 4)
+# Environment: DMHS_BUILD_DIR (default build), DMHS_EXE (default <build>/dmhs).
+#
+# A run whose run.json says "completed" is skipped; one with a checkpoint.h5
+# continues from it (-restart). Ctrl-C or SIGTERM asks every running run to
+# checkpoint and stop (dmhs writes checkpoint.h5 on SIGTERM), then the driver
+# exits; start it again with the same arguments to continue. Each run's
+# terminal output goes to DIR/run<ID>.log. Run from anywhere: the inputs are
+# read from the repository root.
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+ids="1 2 3 4 5 6 8 19 24 25 29 30 31 32"
+jobs=2 ranks=1 out="$HOME/dmhs-runs/vein-study" study="input/vein-study.opts" collect=""
+extra=()
+die() { echo "vein_study: $*" >&2; exit 2; }
+# the "status" of DIR/run.json (not "previous_status"), or nothing
+run_status() { sed -n 's/^  "status": "\([a-z-]*\)".*/\1/p' "$1/run.json" 2>/dev/null | head -n 1; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --ids) ids="${2:?--ids needs a list}"; shift 2 ;;
+    --jobs) jobs="${2:?--jobs needs a number}"; shift 2 ;;
+    --ranks) ranks="${2:?--ranks needs a number}"; shift 2 ;;
+    --out) out="${2:?--out needs a directory}"; shift 2 ;;
+    --study) study="${2:?--study needs a file or none}"; shift 2 ;;
+    --collect) collect="${2:?--collect needs a directory}"; shift 2 ;;
+    --) shift; extra=("$@"); break ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown argument '$1' (see --help)" ;;
+  esac
+done
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || die "--jobs '$jobs' is not a positive whole number"
+[[ "$ranks" =~ ^[1-9][0-9]*$ ]] || die "--ranks '$ranks' is not a positive whole number"
+for id in $ids; do
+  [ -r "$repo/input/vein-run$id.opts" ] || die "--ids: no input/vein-run$id.opts for run '$id'"
+done
+
+if [ -n "$collect" ]; then
+  n=0
+  for id in $ids; do
+    dir="$out/run$id"
+    [ "$(run_status "$dir")" = completed ] || continue
+    dest="$collect/run$id"
+    mkdir -p "$dest"
+    cp "$dir/vein-summary.csv" "$dir/run.json" "$dest/"
+    awk '/^#/ || NR <= 2 || (NR - 2) % 5 == 0' "$dir/vein.csv" > "$dest/vein.csv"
+    # the sinus liquid at the end of each cycle (the rows of Fig. 4.4), as written
+    cp "$dir/vein-sinus.csv" "$dest/"
+    n=$((n + 1))
+  done
+  echo "vein_study: collected $n completed run(s) of '$ids' from $out into $collect"
+  exit 0
+fi
+
+study_opts=()
+if [ "$study" != none ]; then
+  [ -r "$repo/$study" ] || [ -r "$study" ] || die "--study: cannot read '$study'"
+  study_opts=(-options_file "$study")
+fi
+build="${DMHS_BUILD_DIR:-$repo/build}"
+exe="${DMHS_EXE:-$build/dmhs}"
+if [ -z "${DMHS_EXE:-}" ]; then
+  "$repo/scripts/setup.sh"
+fi
+[ -x "$exe" ] || die "no dmhs executable at '$exe'"
+mpirun_flags=(--oversubscribe)
+[ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
+mkdir -p "$out"
+
+pids=() stopping=0
+stop() {
+  stopping=1
+  echo "vein_study: stopping: each running run writes its checkpoint" >&2
+  for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null || true; done
+}
+trap stop INT TERM
+
+# One run, in its own session so that a Ctrl-C reaches it once, through the driver.
+start_run() {
+  local id=$1 dir="$out/run$1" restart=()
+  if [ "$(run_status "$dir")" = completed ]; then
+    echo "vein_study: run $id already completed ($dir)"
+    return 1
+  fi
+  if [ -f "$dir/checkpoint.h5" ]; then
+    restart=(-restart "$dir/checkpoint.h5")
+    echo "vein_study: run $id continues from $dir/checkpoint.h5"
+  else
+    echo "vein_study: run $id starts in $dir"
+  fi
+  (cd "$repo" && exec setsid mpirun "${mpirun_flags[@]}" -n "$ranks" "$exe" \
+     -options_file "input/vein-run$id.opts" "${study_opts[@]}" -output_dir "$dir" \
+     "${restart[@]}" "${extra[@]}") >> "$out/run$id.log" 2>&1 &
+  pids+=($!)
+  return 0
+}
+
+failed=0
+wait_one() {
+  local rc=0
+  wait -n || rc=$?
+  # a trapped signal interrupts wait with a status above 128: wait again for the children
+  local alive=()
+  for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && alive+=("$p"); done
+  pids=("${alive[@]}")
+  if [ "$rc" -ne 0 ] && [ "$stopping" -eq 0 ]; then failed=$((failed + 1)); fi
+}
+
+for id in $ids; do
+  [ "$stopping" -eq 1 ] && break
+  while [ "${#pids[@]}" -ge "$jobs" ]; do wait_one; done
+  [ "$stopping" -eq 1 ] && break
+  start_run "$id" || true
+done
+while [ "${#pids[@]}" -gt 0 ]; do wait_one; done
+
+status=0
+for id in $ids; do
+  dir="$out/run$id"
+  s=$(run_status "$dir")
+  echo "vein_study: run $id: ${s:-not started} ($dir)"
+  [ "$s" = completed ] || status=1
+done
+[ "$failed" -eq 0 ] || echo "vein_study: $failed run(s) ended with an error: see $out/run<ID>.log" >&2
+exit "$status"
