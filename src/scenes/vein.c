@@ -193,12 +193,19 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCheck(v->leaflet_angle_deg >= 0 && v->leaflet_angle_deg < 90, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE, "-vein_leaflet_angle must lie in [0, 90) deg (got %g)",
              v->leaflet_angle_deg);
-  PetscCheck(v->ka_ref >= 0 && v->fluid_mass_ref > 0 && v->solid_mass_ref > 0, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_leaflet_ka must be >= 0, -vein_fluid_mass and -vein_solid_mass > 0");
-  PetscCheck(v->wall_layers >= 1 && v->crossing_interval >= 1 && v->probe_time >= 0, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_wall_layers and -vein_crossing_interval must be >= 1, -vein_probe_time >= 0");
+  PetscCheck(v->ka_ref >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_leaflet_ka must be >= 0 J (got %g)", v->ka_ref);
+  PetscCheck(v->fluid_mass_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_fluid_mass must be > 0 kg (got %g)", v->fluid_mass_ref);
+  PetscCheck(v->solid_mass_ref > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_solid_mass must be > 0 kg (got %g)", v->solid_mass_ref);
+  PetscCheck(v->wall_layers >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_wall_layers must be >= 1 (got %" PetscInt_FMT ")", v->wall_layers);
+  PetscCheck(v->crossing_interval >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_crossing_interval must be >= 1 step (got %" PetscInt_FMT ")",
+             v->crossing_interval);
+  PetscCheck(v->probe_time >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_probe_time must be >= 0 s (got %g)", v->probe_time);
   const double r = v->dx / VEIN_DX_REF;
   s->dx = v->dx;
   /* the thesis's blood (Lucy, h = 2.5 dx, c0 = 10 m/s, rho0 = 1056 kg/m^3, Tait,

@@ -185,3 +185,8 @@ set_tests_properties(cli_peristaltic_shallow_wave_form PROPERTIES LABELS cli TIM
 add_test(NAME cli_vein_study_driver COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_study_driver.sh ${PROJECT_SOURCE_DIR}
   ${DMHS_EXE} ${DMHS_CLI_OUT}/vein-study-driver)
 set_tests_properties(cli_vein_study_driver PROPERTIES LABELS cli TIMEOUT 300 PROCESSORS 2)
+# one option per message, with its value
+dmhs_cli_fail(cli_vein_bad_ka "-vein_leaflet_ka must be >= 0 J \\(got -1"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_leaflet_ka -1 -output_dir ${DMHS_CLI_OUT}/vein-bad-ka)
+dmhs_cli_fail(cli_vein_bad_wall_layers "-vein_wall_layers must be >= 1 \\(got 0\\)"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_wall_layers 0 -output_dir ${DMHS_CLI_OUT}/vein-bad-layers)
