@@ -85,12 +85,12 @@ add_test(NAME validation_vein_plot_closure
 set_tests_properties(validation_vein_plot_vectors validation_vein_plot_closure PROPERTIES LABELS validation
                      TIMEOUT 120 FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean"
                      FIXTURES_SETUP vein_plots)
-# a missing run directory: one line naming it, exit 1
+# a missing run directory: exit status 1 and one line naming it
 foreach(p fields sinus vectors closure convergence)
   add_test(NAME validation_vein_plot_${p}_missing
-           COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_${p}.py ${DMHS_VEIN_OUT}/no-such-run)
-  set_tests_properties(validation_vein_plot_${p}_missing PROPERTIES LABELS validation TIMEOUT 60
-                       PASS_REGULAR_EXPRESSION "no-such-run: no such directory")
+           COMMAND bash ${PROJECT_SOURCE_DIR}/test/cli/expect_fail.sh "no-such-run: no such directory" --lines 1 --
+                   ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_${p}.py ${DMHS_VEIN_OUT}/no-such-run)
+  set_tests_properties(validation_vein_plot_${p}_missing PROPERTIES LABELS validation TIMEOUT 60)
 endforeach()
 
 # one case at several spacings on common axes (here the two quick runs at one spacing)
