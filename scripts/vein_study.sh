@@ -6,9 +6,12 @@
 #   scripts/vein_study.sh                       # all 14 runs, 2 at a time on 1 rank each
 #   scripts/vein_study.sh --ids "1 2 3" --jobs 1 --ranks 2
 #   scripts/vein_study.sh --collect bench/results/vein-study   # copy the finished runs' CSVs
+#   scripts/vein_study.sh --ids "" --clot-seeds "1 2 3 4 5"     # Fig. 4.11: run 19 with clots
 #
 # Options:
 #   --ids "ID ..."    runs of the table (default: 1 2 3 4 5 6 8 19 24 25 29 30 31 32)
+#   --clot-seeds "S ..."  also the clot case (input/vein-clot.opts: run 19 with agglomeration)
+#                     once per RNG seed S (-agglomeration_seed S), into DIR/clot-seed<S>
 #   --jobs J          runs at a time (default 2)
 #   --ranks N         MPI ranks per run (default 1)
 #   --out DIR         runs' output directories DIR/run<ID> (default $HOME/dmhs-runs/vein-study)
@@ -16,6 +19,7 @@
 #                     the study's spacing; give --study none for the published dx = 1e-4 m)
 #   --collect DEST    no run: copy vein-summary.csv, vein.csv (every 5th row), vein-sinus.csv
 #                     (cycle ends only) and run.json of every completed run into DEST/run<ID>/
+#                     (and, for clot runs, clots.csv, into DEST/clot-seed<S>/)
 #   -- OPTIONS        further dmhs options for every run (e.g. -- -t_end 4)
 # Environment: DMHS_BUILD_DIR (default build), DMHS_EXE (default <build>/dmhs).
 #
@@ -28,14 +32,15 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ids="1 2 3 4 5 6 8 19 24 25 29 30 31 32"
-jobs=2 ranks=1 out="$HOME/dmhs-runs/vein-study" study="input/vein-study.opts" collect=""
+seeds="" jobs=2 ranks=1 out="$HOME/dmhs-runs/vein-study" study="input/vein-study.opts" collect=""
 extra=()
 die() { echo "vein_study: $*" >&2; exit 2; }
 # the "status" of DIR/run.json (not "previous_status"), or nothing
 run_status() { sed -n 's/^  "status": "\([a-z-]*\)".*/\1/p' "$1/run.json" 2>/dev/null | head -n 1; }
 while [ $# -gt 0 ]; do
   case "$1" in
-    --ids) ids="${2:?--ids needs a list}"; shift 2 ;;
+    --ids) ids="${2?--ids needs a list}"; shift 2 ;;
+    --clot-seeds) seeds="${2:?--clot-seeds needs a list}"; shift 2 ;;
     --jobs) jobs="${2:?--jobs needs a number}"; shift 2 ;;
     --ranks) ranks="${2:?--ranks needs a number}"; shift 2 ;;
     --out) out="${2:?--out needs a directory}"; shift 2 ;;
@@ -51,21 +56,37 @@ done
 for id in $ids; do
   [ -r "$repo/input/vein-run$id.opts" ] || die "--ids: no input/vein-run$id.opts for run '$id'"
 done
+for seed in $seeds; do
+  [[ "$seed" =~ ^[0-9]+$ ]] || die "--clot-seeds: '$seed' is not a whole number"
+done
+# the runs by name: run<ID> (the table) and clot-seed<S>
+names=()
+for id in $ids; do names+=("run$id"); done
+for seed in $seeds; do names+=("clot-seed$seed"); done
+[ "${#names[@]}" -gt 0 ] || die "no run: --ids and --clot-seeds are both empty"
+# a run's own options: its input file and, for a clot run, its seed
+run_opts() {
+  case "$1" in
+    run*) echo "-options_file input/vein-$1.opts" ;;
+    clot-seed*) echo "-options_file input/vein-clot.opts -agglomeration_seed ${1#clot-seed}" ;;
+  esac
+}
 
 if [ -n "$collect" ]; then
   n=0
-  for id in $ids; do
-    dir="$out/run$id"
+  for name in "${names[@]}"; do
+    dir="$out/$name"
     [ "$(run_status "$dir")" = completed ] || continue
-    dest="$collect/run$id"
+    dest="$collect/$name"
     mkdir -p "$dest"
     cp "$dir/vein-summary.csv" "$dir/run.json" "$dest/"
     awk '/^#/ || NR <= 2 || (NR - 2) % 5 == 0' "$dir/vein.csv" > "$dest/vein.csv"
     # the sinus liquid at the end of each cycle (the rows of Fig. 4.4), as written
     cp "$dir/vein-sinus.csv" "$dest/"
+    [ ! -f "$dir/clots.csv" ] || cp "$dir/clots.csv" "$dest/"
     n=$((n + 1))
   done
-  echo "vein_study: collected $n completed run(s) of '$ids' from $out into $collect"
+  echo "vein_study: collected $n completed run(s) of '${names[*]}' from $out into $collect"
   exit 0
 fi
 
@@ -94,20 +115,21 @@ trap stop INT TERM
 
 # One run, in its own session so that a Ctrl-C reaches it once, through the driver.
 start_run() {
-  local id=$1 dir="$out/run$1" restart=()
+  local name=$1 dir="$out/$1" restart=() own
   if [ "$(run_status "$dir")" = completed ]; then
-    echo "vein_study: run $id already completed ($dir)"
+    echo "vein_study: $name already completed ($dir)"
     return 1
   fi
   if [ -f "$dir/checkpoint.h5" ]; then
     restart=(-restart "$dir/checkpoint.h5")
-    echo "vein_study: run $id continues from $dir/checkpoint.h5"
+    echo "vein_study: $name continues from $dir/checkpoint.h5"
   else
-    echo "vein_study: run $id starts in $dir"
+    echo "vein_study: $name starts in $dir"
   fi
+  read -r -a own <<< "$(run_opts "$name")"
   (cd "$repo" && exec setsid mpirun "${mpirun_flags[@]}" -n "$ranks" "$exe" \
-     -options_file "input/vein-run$id.opts" "${study_opts[@]}" -output_dir "$dir" \
-     "${restart[@]}" "${extra[@]}") >> "$out/run$id.log" 2>&1 &
+     "${own[@]}" "${study_opts[@]}" -output_dir "$dir" \
+     "${restart[@]}" "${extra[@]}") >> "$out/$name.log" 2>&1 &
   pids+=($!)
   return 0
 }
@@ -123,20 +145,20 @@ wait_one() {
   if [ "$rc" -ne 0 ] && [ "$stopping" -eq 0 ]; then failed=$((failed + 1)); fi
 }
 
-for id in $ids; do
+for name in "${names[@]}"; do
   [ "$stopping" -eq 1 ] && break
   while [ "${#pids[@]}" -ge "$jobs" ]; do wait_one; done
   [ "$stopping" -eq 1 ] && break
-  start_run "$id" || true
+  start_run "$name" || true
 done
 while [ "${#pids[@]}" -gt 0 ]; do wait_one; done
 
 status=0
-for id in $ids; do
-  dir="$out/run$id"
+for name in "${names[@]}"; do
+  dir="$out/$name"
   s=$(run_status "$dir")
-  echo "vein_study: run $id: ${s:-not started} ($dir)"
+  echo "vein_study: $name: ${s:-not started} ($dir)"
   [ "$s" = completed ] || status=1
 done
-[ "$failed" -eq 0 ] || echo "vein_study: $failed run(s) ended with an error: see $out/run<ID>.log" >&2
+[ "$failed" -eq 0 ] || echo "vein_study: $failed run(s) ended with an error: see $out/<run>.log" >&2
 exit "$status"

@@ -14,9 +14,9 @@ Reads RUNDIR/vein-summary.csv of every run and writes
                                    peak stress against the peak inlet velocity of the
                                    first cycle, one line per leaflet length
 PREFIX defaults to the first RUNDIR + '/'. Prints a table of the runs (u: the
-peak u_mean of the first cycle; disp, stress: the measurement point's means);
-runs with empty cells are drawn where possible and listed as "no measurement
-point".
+peak u_flux of the first cycle, the thesis's V; disp, stress: the measurement
+point's means); runs with empty cells are drawn where possible and listed as
+"no measurement point".
 """
 import argparse
 import collections
@@ -31,7 +31,7 @@ import numpy as np  # noqa: E402
 
 import vein_common as vc  # noqa: E402
 
-NEED = ("leaflet_length", "g0", "ka_ref", "dx", "u_mean_peak_cycle1", "disp_mean", "disp_std",
+NEED = ("leaflet_length", "g0", "ka_ref", "dx", "u_flux_peak_cycle1", "disp_mean", "disp_std",
         "peak_stress_mean", "peak_stress_std")
 
 
@@ -90,7 +90,7 @@ def main():
           f"{'stress [Pa]':>11}")
     for r in runs:
         print(f"{r['dir']:<{width}} {cell(r['leaflet_length'], '8.4g'):>8} {cell(r['g0'], '6.3g'):>6} "
-              f"{cell(r['ka_ref'], '8.3g'):>8} {cell(r['u_mean_peak_cycle1'], '8.4f'):>8} "
+              f"{cell(r['ka_ref'], '8.3g'):>8} {cell(r['u_flux_peak_cycle1'], '8.4f'):>8} "
               f"{cell(r['disp_mean'], '10.4g'):>10} {cell(r['peak_stress_mean'], '11.4g'):>11}")
     for r in runs:
         missing = [k for k in ("disp_mean", "peak_stress_mean") if math.isnan(r[k])]
@@ -137,8 +137,8 @@ def main():
     fig, ax = plt.subplots(1, 2, figsize=(10, 4.2))
     drawn = [False, False]
     for L, group in group_lengths([r for r in runs if r["ka_ref"] == ka0]):
-        group = sorted(group, key=lambda r: r["u_mean_peak_cycle1"])
-        u = [r["u_mean_peak_cycle1"] for r in group]
+        group = sorted(group, key=lambda r: r["u_flux_peak_cycle1"])
+        u = [r["u_flux_peak_cycle1"] for r in group]
         label = f"L = {L * 1e3:g} mm"
         drawn[0] |= errorbars(ax[0], u, [r["disp_mean"] * 1e3 for r in group], [r["disp_std"] * 1e3 for r in group],
                               fmt="o-", label=label)
@@ -147,7 +147,7 @@ def main():
     if drawn[0] != drawn[1]:  # one panel empty: the same velocity range on both
         ax[int(drawn[0])].set_xlim(ax[int(drawn[1])].get_xlim())
     for a, ok, what in zip(ax, drawn, ("displacement", "peak stress per cycle")):
-        a.set_xlabel("peak inlet velocity u_mean, first cycle [m/s]")
+        a.set_xlabel("peak inlet velocity u_flux, first cycle [m/s]")
         a.grid(True, alpha=0.3)
         if ok:
             a.legend(fontsize=8)

@@ -181,7 +181,8 @@ add_test(NAME cli_peristaltic_shallow_wave_form COMMAND ${DMHS_EXPECT_OUTPUT}
   -t_end 1e-6 -output_snapshots false -output_dir ${DMHS_CLI_OUT}/peristaltic-shallow)
 set_tests_properties(cli_peristaltic_shallow_wave_form PROPERTIES LABELS cli TIMEOUT 60)
 # scripts/vein_study.sh: two tiny runs at a time, stopped by SIGTERM with checkpoints, continued to
-# the same rows as an uninterrupted study, completed runs skipped, --collect (test/cli/vein_study_driver.sh)
+# the same rows as an uninterrupted study, completed runs skipped, a clot run by seed, --collect
+# (test/cli/vein_study_driver.sh)
 add_test(NAME cli_vein_study_driver COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vein_study_driver.sh ${PROJECT_SOURCE_DIR}
   ${DMHS_EXE} ${DMHS_CLI_OUT}/vein-study-driver)
 set_tests_properties(cli_vein_study_driver PROPERTIES LABELS cli TIMEOUT 300 PROCESSORS 2)

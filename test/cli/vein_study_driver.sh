@@ -3,7 +3,8 @@
 # short leaflets, at dx = 5e-4 m on a 0.06 m period) two at a time; SIGTERM to
 # the driver stops both with a checkpoint; started again, the driver continues
 # both and they complete; their vein.csv equals, byte for byte, that of an
-# uninterrupted run; a third start skips them; --collect copies their CSVs.
+# uninterrupted run; a third start skips them; --collect copies their CSVs; a
+# tiny clot run by seed (--clot-seeds) runs with that seed and its clots.csv is collected.
 # Usage: vein_study_driver.sh REPO DMHS WORKDIR
 set -euo pipefail
 repo=$1 exe=$2 W=$3
@@ -31,8 +32,8 @@ done
 # started again: both continue and complete
 drive --out "$W/study" > "$W/2.log" 2>&1 || fail "the continued study failed"
 for id in 4 5; do
-  grep -q "run $id continues from $W/study/run$id/checkpoint.h5" "$W/2.log" || fail "run $id not continued"
-  grep -q "run $id: completed" "$W/2.log" || fail "run $id not completed"
+  grep -q "run$id continues from $W/study/run$id/checkpoint.h5" "$W/2.log" || fail "run $id not continued"
+  grep -q "run$id: completed" "$W/2.log" || fail "run $id not completed"
 done
 
 # the same runs without interruption: the same rows
@@ -51,7 +52,20 @@ for id in 4 5; do
     [ -s "$W/results/run$id/$f" ] || fail "--collect: no $f of run $id"
   done
 done
+# the clot case by seed: one tiny clot run, its clot files collected
+clot=(-vein_dx 5e-4 -vein_length 0.06 -vein_leaflet_length 0.01 -t_end 0.06 -output_interval 0.01
+      -agglomeration_start 0.02 -agglomeration_interval 0.01 -quiet)
+DMHS_EXE="$exe" bash "$repo/scripts/vein_study.sh" --ids "" --clot-seeds 3 --study none --out "$W/study" \
+  -- "${clot[@]}" > "$W/7.log" 2>&1 || fail "the clot run failed"
+grep -q "clot-seed3: completed" "$W/7.log" || fail "clot-seed3 not completed"
+grep -qE -- '-agglomeration_seed 3( |")' "$W/study/clot-seed3/run.json" \
+  || fail "clot-seed3 did not run with seed 3"
+bash "$repo/scripts/vein_study.sh" --ids "" --clot-seeds 3 --out "$W/study" --collect "$W/results" \
+  > "$W/8.log" 2>&1 || fail "--collect of the clot run failed"
+[ -s "$W/results/clot-seed3/clots.csv" ] || fail "--collect: no clots.csv of clot-seed3"
 # bad arguments: a clear message and status 2
 rc=0; bash "$repo/scripts/vein_study.sh" --ids "4 7" --out "$W/x" > "$W/6.log" 2>&1 || rc=$?
 [ "$rc" = 2 ] && grep -q "no input/vein-run7.opts" "$W/6.log" || fail "an unknown run id was not refused"
+rc=0; bash "$repo/scripts/vein_study.sh" --clot-seeds "1 x" --out "$W/x" > "$W/9.log" 2>&1 || rc=$?
+[ "$rc" = 2 ] && grep -q "clot-seeds: 'x'" "$W/9.log" || fail "a bad seed was not refused"
 echo "vein study driver: OK"
