@@ -132,6 +132,12 @@ endforeach()
 add_test(NAME cli_colon_study_plot COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/colon_study_plot.py
   ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_study.py ${DMHS_CLI_OUT}/colon-study-plot)
 set_tests_properties(cli_colon_study_plot PROPERTIES LABELS cli TIMEOUT 60)
+# scripts/post/sph_grid.py, the kernel interpolation behind plot_fields.py and the vein's maps, on
+# synthetic lattices: the kernels' normalisation, periodic boxes (sums across the boundary, periods
+# of 2 and 3 cells), a free edge (test/cli/sph_grid_selftest.py)
+add_test(NAME cli_sph_grid_selftest COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/sph_grid_selftest.py
+  ${PROJECT_SOURCE_DIR}/scripts/post)
+set_tests_properties(cli_sph_grid_selftest PROPERTIES LABELS cli TIMEOUT 60)
 # the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
 add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* ETA +0.0 s" --reject "ETA +-" --
   ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5
