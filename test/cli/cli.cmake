@@ -110,6 +110,13 @@ set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
 add_test(NAME cli_colon_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/colon_study.sh ${PROJECT_SOURCE_DIR}
   ${DMHS_CLI_OUT}/colon-study)
 set_tests_properties(cli_colon_study_script PROPERTIES LABELS cli TIMEOUT 60)
+# every scripts/slurm/*.sbatch with --dry-run outside Slurm: the srun command (and with RESUBMIT=1 the
+# sbatch) it would run, nothing run, a restart and a skip, bad task ids and a missing options file
+# refused; the site placeholders (account, partition, modules) and how to change tasks and time
+# (test/cli/slurm_dry_run.sh)
+add_test(NAME cli_slurm_dry_run COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm_dry_run.sh ${PROJECT_SOURCE_DIR}
+  ${DMHS_CLI_OUT}/slurm-dry-run)
+set_tests_properties(cli_slurm_dry_run PROPERTIES LABELS cli TIMEOUT 60)
 # the colon study's inputs parse (read from the repository root, as they read input/intestine.opts) and
 # -help shows their overrides
 foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081>"
