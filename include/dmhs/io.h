@@ -14,6 +14,16 @@
 struct sim;
 struct xdmf;
 
+/* An attribute that a module adds to the root of every snapshot (io_snapshot_attribute_*): the
+ * SPH module's kernel and support radius, so that post-processing reads them instead of
+ * knowing each scene's defaults. */
+#define IO_SNAPSHOT_ATTRIBUTES 8
+typedef struct io_attribute {
+  char name[32];
+  char text[32]; /* a string attribute, or "" for a real one */
+  double value;
+} io_attribute;
+
 typedef struct io_state {
   /* options */
   PetscBool snapshots;                   /* -output_snapshots */
@@ -39,6 +49,8 @@ typedef struct io_state {
   /* csv_open after a restart keeps the rows at the checkpoint's time (those of a diagnostic
    * that sampled there; set around each sample by the diagnostics list) */
   PetscBool csv_keep_restart_rows;
+  io_attribute snapshot_attributes[IO_SNAPSHOT_ATTRIBUTES]; /* the modules' (see above) */
+  int n_snapshot_attributes;
 } io_state;
 
 /* Options pass; also called for -help. Must run before the scene is built. */
@@ -61,6 +73,11 @@ PetscErrorCode io_checkpoint_at_end(struct sim *s);
 /* After the loop: final checkpoint (-checkpoint_at_end), run.json with the exit status. */
 PetscErrorCode io_finish(struct sim *s);
 PetscErrorCode io_destroy(struct sim *s);
+/* Adds (or replaces) a root attribute of every snapshot written from now on: a real number
+ * (one-element array, like time) or a string. Any rank may call it; every rank must give the
+ * same value. */
+PetscErrorCode io_snapshot_attribute_real(struct sim *s, const char *name, double value);
+PetscErrorCode io_snapshot_attribute_string(struct sim *s, const char *name, const char *text);
 /* Error path (best effort, never fails): run.json gets status "error" and the message. */
 void io_record_error(struct sim *s, const char *message);
 

@@ -5,7 +5,10 @@
  *                       N datasets, 2D vectors as N x 3 with z = 0 (ParaView
  *                       treats only 3-component arrays as vectors)
  *   attributes of /:    time [s], step, dt [s], dim (2), n_particles,
- *                       dmhs_version, scene, options (the resolved options)
+ *                       dmhs_version, scene, options (the resolved options),
+ *                       box_lo, box_hi [m] and periodic (0/1) per dimension, dx [m]
+ *                       (the rest spacing), and the modules' own (io.h: with SPH,
+ *                       sph_kernel and sph_h [m])
  * Written to <name>.tmp and renamed once complete. */
 #ifndef DMHS_SNAPSHOT_H
 #define DMHS_SNAPSHOT_H

@@ -39,8 +39,12 @@ def main():
     if not seeds:
         vc.fail(f"{path}: no clot_<k> column")
     t = data["t"]
+    info = {}
+    if os.path.isfile(os.path.join(a.outdir, "vein.csv")):
+        info = vc.read_csv(os.path.join(a.outdir, "vein.csv"), need=("t",))[1]
+    title = vc.case_title(info, a.outdir)  # the run's parameters (run.json)
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for n in seeds:
         k = int(n[5:])
         ax.plot(t, data[n], marker="o", ms=3, label=LABELS.get(k, n))
@@ -49,6 +53,7 @@ def main():
     ax.set_title("clot growth per seed (Fig. 4.11 analogue)")
     ax.grid(alpha=0.3)
     ax.legend()
+    fig.suptitle(title, fontsize=9)
     fig.tight_layout()
     out = vc.output_path(a.out, a.outdir, "clots.png")
     fig.savefig(out, dpi=130)
@@ -97,6 +102,7 @@ def main():
         ax.set_xlim(mid[0] - half, mid[0] + half)
         ax.set_ylim(mid[1] - half, mid[1] + half)
         ax.set_title(f"clot of {len(c)} particles")
+    fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     out = vc.output_path(a.out, a.outdir, "clots_snapshot.png")
     fig.savefig(out, dpi=130)

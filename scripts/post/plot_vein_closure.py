@@ -129,7 +129,8 @@ def main():
         if len(shapes) < 2:
             vc.fail(f"{snap}: expected two leaflets (body 1 and 2), found {len(shapes)}")
         i = int(np.argmin(np.abs(cols["t"] - t_snap)))
-        runs.append(dict(run=run, info=info, t_want=t_want, why=why, t_snap=t_snap, d=d, geo=geo, gx=gx, gy=gy,
+        runs.append(dict(run=run, info=info, ka=vc.run_params(run, info).get("k_a", math.nan), t_want=t_want,
+                         why=why, t_snap=t_snap, d=d, geo=geo, gx=gx, gy=gy,
                          speed=fields["speed"], shapes=shapes, gap_csv=float(cols["gap"][i]),
                          u=vg.inlet_at(cols, t_snap)))
 
@@ -141,7 +142,7 @@ def main():
         gap = float(np.hypot(*(s1[1] - s2[1]))) * 1e3
         for b in (1, 2):
             root, tip, defl, where = r["shapes"][b]
-            print(f"{os.path.basename(os.path.normpath(r['run'])):<28} {r['info'].get('k_a', math.nan):>8g} "
+            print(f"{os.path.basename(os.path.normpath(r['run'])):<28} {r['ka']:>8g} "
                   f"{r['t_snap']:>7.3f}  {NAMES[b]:<6} {tip[0] * 1e3:>8.2f},{tip[1] * 1e3:>7.2f} "
                   f"{gap:>8.3f} {gap - 2 * r['geo']['dx'] * 1e3:>8.3f}  {defl * 1e3:>+15.3f} {where:>6.2f}")
 
@@ -180,11 +181,11 @@ def main():
             parts.append(f"{NAMES[b]} {defl * 1e3:+.2f}")
         gap = float(np.hypot(*(r["shapes"][1][1] - r["shapes"][2][1]))) * 1e3
         vg.setup_map(ax, window_mm, ymax, xlabel=(i == n - 1))
-        ka = r["info"].get("k_a", math.nan)
+        ka = next((p for p in parts_of[i] if p.startswith("k_a")), f"k_a = {r['ka']:g} J")
         own = [p for p in parts_of[i] if p not in common and not p.startswith("k_a")]
         name = os.path.basename(os.path.normpath(r["run"])) + (f" ({', '.join(own)})" if own else "")
         u, uname = r["u"]
-        ax.set_title(f"k_a = {ka:g} J — {name}\n"
+        ax.set_title(f"{ka} — {name}\n"
                      f"t = {r['t_snap']:.3f} s ({r['why']}), {uname} = {u:+.3g} m/s\n"
                      f"tip gap {gap:.2f} mm (clear opening {gap - 2 * r['geo']['dx'] * 1e3:.2f} mm); "
                      f"deflection from the chord (+ toward the sinus): " + ", ".join(parts) + " mm",

@@ -89,7 +89,8 @@ def main():
     for axis in ax[:2]:
         axis.legend(fontsize=7, loc="best")
     ax[2].legend(fontsize=6, loc="best", ncol=2)
-    fig.suptitle(f"{vc.case_title({k: v for k, v in runs[0][3].items() if k != 'dx'})}: "
+    head = ", ".join(p for p in vc.case_title(runs[0][3], runs[0][1]).split(", ") if not p.startswith("dx ="))
+    fig.suptitle(f"{head}: "
                  f"spacings {', '.join(f'{r[0] * 1e3:g}' for r in runs)} mm")
     fig.tight_layout()
     path = vc.output_path(a.out, a.rundirs[0], "vein_convergence.png")

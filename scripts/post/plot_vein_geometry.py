@@ -56,7 +56,7 @@ def dim(ax, p, q, text, offset=(0, 0), at=0.5, **kw):
                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
 
 
-def draw(ax, d, s):
+def draw(ax, d, s, leaflet_label="leaflet"):
     fluid, wall, leaflet = vc.masks(d)
     x = d["x"] * 1e3
     sinus = fluid & (d["tracer"] == 1)
@@ -64,7 +64,7 @@ def draw(ax, d, s):
     ax.scatter(x[fluid & ~sinus, 0], x[fluid & ~sinus, 1], s=s, c=BLUE, linewidths=0, label="liquid")
     ax.scatter(x[sinus, 0], x[sinus, 1], s=s, c=ORANGE, linewidths=0, label="sinus liquid (tracer 1)")
     free = leaflet & (d["type"] == vc.SOLID)
-    ax.scatter(x[free, 0], x[free, 1], s=s, c="k", linewidths=0, zorder=3, label="leaflet")
+    ax.scatter(x[free, 0], x[free, 1], s=s, c="k", linewidths=0, zorder=3, label=leaflet_label)
     clamp = leaflet & ~free
     ax.scatter(x[clamp, 0], x[clamp, 1], s=s, c="k", marker="s", linewidths=0, zorder=3,
                label="leaflet root (clamped)")
@@ -116,12 +116,22 @@ def main():
 
     xlim = (x[:, 0].min() - dx, x[:, 0].max() + dx)
     ylim = (x[:, 1].min() - 2.5 * dx, x[:, 1].max() + 4 * dx)
-    fig = plt.figure(figsize=(11, 8.6))
-    ax = fig.add_axes([0.07, 0.45, 0.9, 0.45])
+    # the layout in inches, the main panel as high as its equal aspect needs: from the top the
+    # title, the panel's title and legend, the panel, its x axis, the zoom's title, the zoom
+    zx, zy = (root[0] - 3, root[0] + 5), (root[1] - 2.5, root[1] + 3.2)
+    fw, left, pw = 11.0, 0.77, 9.9
+    ph = pw * (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
+    head, axis_room, ztitle, zh, foot = 1.25, 0.65, 0.45, 2.9, 0.55
+    zw = zh * (zx[1] - zx[0]) / (zy[1] - zy[0])
+    fh = head + ph + axis_room + ztitle + zh + foot
+    fig = plt.figure(figsize=(fw, fh))
+    ax = fig.add_axes([left / fw, (fh - head - ph) / fh, pw / fw, ph / fh])
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_aspect("equal")
-    draw(ax, d, vc.marker_size(ax, dx))
+    # the leaflet's length and angle in the legend: as a label beside the leaflet it covered the
+    # rest gap's label at the tips (short leaflets) or the sinus wall (long ones)
+    draw(ax, d, vc.marker_size(ax, dx), leaflet_label=f"leaflet, L = {L:.1f} mm at {theta:.2f}° to the axis")
     xs = xlim[0] + 0.08 * (xlim[1] - xlim[0])
     dim(ax, (xs, -0.5 * W), (xs, 0.5 * W), f"W = {W:.2f} mm", offset=(4, 0), ha="left")
     dim(ax, (xc, -0.5 * D), (xc, 0.5 * D), f"D = {D:.2f} mm{how_D}", offset=(4, 0), at=0.1, ha="left")
@@ -130,19 +140,15 @@ def main():
     ax.plot([xc - 0.5 * S] * 2, [0.5 * W, ytop], color="crimson", lw=0.6, ls=":")
     ax.plot([xc + 0.5 * S] * 2, [0.5 * W, ytop], color="crimson", lw=0.6, ls=":")
     dim(ax, (tip_x + dx, -0.5 * gap), (tip_x + dx, 0.5 * gap), f"rest gap {gap:.2f} mm", offset=(4, 0), ha="left")
-    mid = 0.5 * (x[free_u].min(axis=0) + x[free_u].max(axis=0))
-    ax.annotate(f"leaflet L = {L:.1f} mm at {theta:.2f}° to the axis", mid, xytext=(-60, -30),
-                textcoords="offset points", fontsize=9, arrowprops=dict(arrowstyle="-", lw=0.6),
-                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
-    ax.legend(loc="lower left", fontsize=8, ncol=5, markerscale=2, bbox_to_anchor=(0, 1.0), frameon=False)
+    ax.legend(loc="lower left", fontsize=8, ncol=5, markerscale=2, bbox_to_anchor=(0, 1.0), frameon=False,
+              columnspacing=1.2, handletextpad=0.3)
     ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d['tracer'] == 1)).sum()} in the sinus), "
                  f"{wall.sum()} wall, {leaflet.sum()} leaflet particles", fontsize=10, pad=22)
-    zx, zy = (root[0] - 3, root[0] + 5), (root[1] - 2.5, root[1] + 3.2)
     ax.add_patch(plt.Rectangle((zx[0], zy[0]), zx[1] - zx[0], zy[1] - zy[0], fill=False, ls="--", lw=0.8))
 
-    az = fig.add_axes([0.22, 0.06, 0.56, 0.32])
+    az = fig.add_axes([(fw - zw) / 2 / fw, foot / fh, zw / fw, zh / fh])
     az.set_xlim(*zx)
     az.set_ylim(*zy)
     az.set_aspect("equal")
@@ -153,20 +159,22 @@ def main():
         for i, j in b[keep]:
             az.plot(x[[i, j], 0], x[[i, j], 1], color="0.45", lw=0.8, zorder=4)
     r_arc = 3.0
-    az.plot([root[0], root[0] + r_arc * 1.3], [root[1]] * 2, color="crimson", lw=0.8, ls="--")
+    az.plot([root[0], root[0] + r_arc * 1.15], [root[1]] * 2, color="crimson", lw=0.8, ls="--")
     az.add_patch(Arc(root, 2 * r_arc, 2 * r_arc, theta1=-theta, theta2=0, color="crimson", lw=1.5,
                      zorder=5))
-    az.annotate(f"θ = {theta:.2f}°", (root[0] + r_arc * 1.3, root[1]), xytext=(4, 0),
-                textcoords="offset points", color="crimson", fontsize=9, va="center",
-                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
-    az.annotate(f"root (x = {root[0]:.2f} mm, y = W/2)", root, xytext=(-130, -45), textcoords="offset points",
-                fontsize=9, arrowprops=dict(arrowstyle="->", lw=0.7),
+    # above the dashed line's end, right-aligned: inside the panel whatever the angle
+    az.annotate(f"θ = {theta:.2f}°", (root[0] + r_arc * 1.15, root[1]), xytext=(0, 4),
+                textcoords="offset points", color="crimson", fontsize=9, va="bottom", ha="right",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8), zorder=6)
+    # the label inside the panel's lower left (offset points from the root ran over the y tick labels)
+    az.annotate(f"root (x = {root[0]:.2f} mm, y = W/2)", root, xytext=(0.03, 0.2), textcoords="axes fraction",
+                fontsize=9, ha="left", arrowprops=dict(arrowstyle="->", lw=0.7),
                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     az.set_xlabel("x [mm]")
     az.set_ylabel("y [mm]")
     az.set_title(f"upper leaflet root (dashed box above): bonds grey, clamped column square, dx = {dx:g} mm",
                  fontsize=10)
-    fig.suptitle(vc.case_title(info))
+    fig.suptitle(vc.case_title(info, args.outdir), y=1 - 0.12 / fh, va="top")
     out = vc.output_path(args.out, args.outdir, "vein_geometry.png")
     fig.savefig(out, dpi=110)
     print(f"W = {W:.3f} mm, D = {D:.3f} mm, sinus {S:.3f} mm from x = {xc - 0.5 * S:.3f} mm, "

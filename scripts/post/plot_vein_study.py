@@ -77,6 +77,8 @@ def main():
         vc.require_dir(d)
         sm = vc.read_summary(os.path.join(d, "vein-summary.csv"), need=NEED)
         sm["dir"] = d
+        # k_a as the run had it (run.json: -angle_k given explicitly overrides -vein_leaflet_ka)
+        sm["ka_ref"] = vc.run_params(d, sm).get("k_a", sm["ka_ref"])
         runs.append(sm)
     prefix = args.out if args.out is not None else args.rundirs[0].rstrip("/") + "/"
     if os.path.dirname(prefix):
@@ -113,6 +115,10 @@ def main():
         lengths = ", ".join(sorted({f"{r['leaflet_length'] * 1e3:g}" for r in sel}))
         title = (f"vein study: L = {args.length * 1e3:g} mm (runs: {lengths} mm), g0 = {g0:g} m/s², "
                  f"{len(sel)} run(s)")
+        others = [p for p in vc.shared_parts([r["dir"] for r in sel], sel)
+                  if not p.startswith(("L =", "g0 =", "k_a ="))]
+        if others:
+            title += "\n" + ", ".join(others)
         if min(ka) == max(ka):
             for a in ax:
                 a.set_xlim(min(ka) / 3, min(ka) * 3)
@@ -155,7 +161,10 @@ def main():
             no_data(a, what)
     ax[0].set_ylabel("displacement, time average ± std [mm]")
     ax[1].set_ylabel("peak stress per cycle, mean ± std [Pa]")
-    fig.suptitle(f"vein study: k_a = {ka0:g} J, {sum(r['ka_ref'] == ka0 for r in runs)} run(s)")
+    sel = [r for r in runs if r["ka_ref"] == ka0]
+    others = [p for p in vc.shared_parts([r["dir"] for r in sel], sel)
+              if not p.startswith(("L =", "g0 =", "k_a ="))]
+    fig.suptitle(f"vein study: k_a = {ka0:g} J, {len(sel)} run(s)" + ("\n" + ", ".join(others) if others else ""))
     fig.tight_layout()
     out_u = prefix + "vein_study_velocity.png"
     fig.savefig(out_u, dpi=110)

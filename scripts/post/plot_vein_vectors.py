@@ -89,7 +89,7 @@ def main():
         fluid, _, _ = vc.masks(d)
         vol = d["mass"][fluid] / d["rho"][fluid]
         f, s = vg.interpolate(d["x"][fluid, 0], d["x"][fluid, 1], vol, d["v"][fluid], AX.ravel(), AY.ravel(),
-                              geo["h"], period=geo["length"])
+                              geo["h"], period=geo["length"], kernel=geo["kernel"])
         ok = s >= vg.MASK_THRESHOLD
         u, uname = vg.inlet_at(cols, t_snap)
         label = (f"t = {t_snap:.3f} s, {vg.phase(cols, t_snap)} phase ({uname} = {u:+.3g} m/s"

@@ -7,7 +7,12 @@
   nearest_snapshot(run_dir, t)
   read_snapshot(path, names) {'time': t, name: array} from /particles (and 'bonds')
   masks(snapshot)            fluid, wall and leaflet (body > 0) masks
-  case_title(info)           'vein: L = 25.5 mm, g0 = 0.5 m/s^2, ...'
+  run_options(run_dir)       run.json's options as {name: value} (None without run.json)
+  run_params(run_dir, info)  the run's actual L, g0, k_a, T, dx, nu: run.json's options
+                             over the scene's defaults, else the vein.csv comment
+  case_title(info, run_dir)  'vein: L = 25.6 mm, g0 = 0.1 m/s², k_a = 0.01 J, ...'
+  title_parts(run_dir, info) its parts, ['L = 25.6 mm', 'g0 = 0.1 m/s²', ...]
+  shared_parts(run_dirs)     the parts every run has (a multi-run figure's title)
 
 Every reader calls fail() with a one-line message naming the file when it is
 missing, empty or lacks a column or dataset; fail() exits with status 1.
@@ -152,28 +157,106 @@ def masks(d):
     return d["type"] == FLUID, (d["type"] == WALL) & ~leaflet, leaflet
 
 
-def case_title(info):
-    """A short name of the case from the CSV comment (or summary) keys."""
-    def get(*keys):
-        for k in keys:
-            if k in info and not math.isnan(info[k]):
-                return info[k]
+# src/scenes/vein.c's defaults for the parameters a title shows (the reference case)
+VEIN_DEFAULTS = {"vein_leaflet_length": 0.0256, "body_force_amplitude": 0.1, "vein_leaflet_ka": 0.01,
+                 "body_force_period": 4.0, "vein_dx": 1e-4, "sph_nu": 3.3e-6}
+DX_REF = 1e-4  # the spacing -vein_leaflet_ka is stated at [m]
+
+
+def run_options(run_dir):
+    """The options a run ran with, from run_dir/run.json (its 'options': every option
+    of the command line and the options files), as {name without the dash: value};
+    None when there is no readable run.json."""
+    import json
+
+    import sph_grid
+
+    path = os.path.join(run_dir, "run.json")
+    try:
+        with open(path) as f:
+            text = json.load(f).get("options", "")
+    except (OSError, ValueError):
+        return None
+    return sph_grid.parse_options(text)
+
+
+def _option_number(text):
+    """An option's (first) value as a number, or None."""
+    try:
+        return float(str(text).split(",")[0])
+    except ValueError:
         return None
 
+
+def run_params(run_dir=None, info=None):
+    """The parameters a vein plot's title shows, as the run had them: {'leaflet' [m],
+    'g0' [m/s^2], 'k_a' [J, at dx = 1e-4 m], 'T' [s], 'dx' [m], 'nu' [m^2/s],
+    'k_a_note' (how k_a was set when not by -vein_leaflet_ka)}. From run_dir/run.json's
+    options over the scene's defaults; -angle_k given explicitly is the angle stiffness
+    at the run's dx, so k_a = angle_k dx / 1e-4 m. Without run.json: the vein.csv
+    comment (info) and nu from vein-summary.csv."""
+    opts = run_options(run_dir) if run_dir else None
+    if opts is None:
+        out = {}
+        for key, names in (("leaflet", ("leaflet", "leaflet_length")), ("g0", ("g0",)),
+                           ("k_a", ("k_a", "ka_ref")), ("T", ("T", "period")), ("dx", ("dx",)),
+                           ("nu", ("nu",))):
+            for k in names:
+                if info and k in info and not math.isnan(info[k]):
+                    out[key] = info[k]
+                    break
+        summary = os.path.join(run_dir, "vein-summary.csv") if run_dir else ""
+        if "nu" not in out and summary and os.path.isfile(summary):
+            nu = read_summary(summary).get("nu", math.nan)
+            if math.isfinite(nu):
+                out["nu"] = nu
+        return out
+
+    def get(name):
+        v = _option_number(opts[name]) if opts.get(name) else None
+        return VEIN_DEFAULTS[name] if v is None else v
+
+    out = {"leaflet": get("vein_leaflet_length"), "g0": get("body_force_amplitude"),
+           "k_a": get("vein_leaflet_ka"), "T": get("body_force_period"), "dx": get("vein_dx"),
+           "nu": get("sph_nu")}
+    angle_k = _option_number(opts["angle_k"]) if opts.get("angle_k") else None
+    if angle_k is not None:
+        out["k_a"] = angle_k * out["dx"] / DX_REF
+        out["k_a_note"] = f"-angle_k {angle_k:g} J at dx = {out['dx'] * 1e3:g} mm"
+    return out
+
+
+def title_parts(run_dir=None, info=None):
+    """The run's parameters as title parts: 'L = 25.6 mm', 'g0 = 0.1 m/s²', 'k_a = 0.01 J',
+    'T = 4 s', 'dx = 0.4 mm', 'ν = 1e-05 m²/s' (those known; run_params)."""
+    p = run_params(run_dir, info)
     parts = []
-    L, g0, ka, T, dx = (get("leaflet", "leaflet_length"), get("g0"), get("k_a", "ka_ref"),
-                        get("T", "period"), get("dx"))
-    if L is not None:
-        parts.append(f"L = {L * 1e3:g} mm")
-    if g0 is not None:
-        parts.append(f"g0 = {g0:g} m/s²")
-    if ka is not None:
-        parts.append(f"k_a = {ka:g} J")
-    if T is not None:
-        parts.append(f"T = {T:g} s")
-    if dx is not None:
-        parts.append(f"dx = {dx * 1e3:g} mm")
-    return "vein: " + ", ".join(parts)
+    if "leaflet" in p:
+        parts.append(f"L = {p['leaflet'] * 1e3:g} mm")
+    if "g0" in p:
+        parts.append(f"g0 = {p['g0']:g} m/s²")
+    if "k_a" in p:
+        parts.append(f"k_a = {p['k_a']:g} J" + (f" ({p['k_a_note']})" if "k_a_note" in p else ""))
+    if "T" in p:
+        parts.append(f"T = {p['T']:g} s")
+    if "dx" in p:
+        parts.append(f"dx = {p['dx'] * 1e3:g} mm")
+    if "nu" in p:
+        parts.append(f"ν = {p['nu']:g} m²/s")
+    return parts
+
+
+def case_title(info, run_dir=None):
+    """A short name of the case: the run's parameters (run_params: run.json's
+    options when run_dir has one, else the CSV comment or summary keys in info)."""
+    return "vein: " + ", ".join(title_parts(run_dir, info))
+
+
+def shared_parts(run_dirs, infos=None):
+    """The title parts (title_parts) that every run of run_dirs has, in order."""
+    infos = infos or [None] * len(run_dirs)
+    parts_of = [title_parts(d, i) for d, i in zip(run_dirs, infos)]
+    return [p for p in parts_of[0] if all(p in q for q in parts_of[1:])]
 
 
 def output_path(out, default_dir, name):

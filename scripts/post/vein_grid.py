@@ -4,6 +4,7 @@ drawing helpers shared by the plot_vein_*.py field maps (scene vein).
   geometry(snap_path, info)   the scene's lengths [m] from the snapshot's 'options'
                               attribute (defaults of src/scenes/vein.c otherwise)
   interpolate(...)            Shepard-normalised SPH sums at arbitrary points
+                              (sph_grid.py, the one implementation for every scene)
   liquid_grid(...)            liquid fields on a regular grid, masked outside the liquid
   draw_solids(ax, d, geo)     walls (grey) and leaflets (black), x and y in mm
   leaflets(d)                 each leaflet's two particle layers, sorted root to tip
@@ -13,16 +14,14 @@ drawing helpers shared by the plot_vein_*.py field maps (scene vein).
   phase(cols, t)              'forward' / 'backward' from the inlet velocity at t
   default_times(cols, T)      the first cycle's forward and backward peaks
 
-Interpolation (the scene's kernel, Lucy in 2D, support radius h = 2.5 dx):
+Interpolation (the run's kernel and support radius h, the snapshot's sph_kernel
+and sph_h; the scene's default Lucy, h = 2.5 dx):
     W(q) = 5 / (pi h^2) (1 + 3q) (1 - q)^3,  q = r/h < 1,
     f(x) = sum_j f_j V_j W(x - x_j) / sum_j V_j W(x - x_j),  V_j = m_j / rho_j,
-over the liquid particles only, minimum image in the periodic x. The kernel sum
-S(x) = sum_j V_j W is ~1 inside the liquid and falls to ~0.5 at its free edge
-(half the kernel covered); grid points with S < 0.5 (inside walls and leaflets,
-beyond the domain) are masked. Neighbours come from a cell list of cells at
-least h wide: each grid point looks at the particles of its 3 x 3 cells, in
-vectorised chunks of grid points (a padded cell -> particle table), so that
-1e5 particles onto a 1000 x 200 grid take seconds.
+over the liquid particles only, minimum image in the periodic x (sph_grid.py).
+The kernel sum S(x) = sum_j V_j W is ~1 inside the liquid and falls to ~0.5 at
+its free edge (half the kernel covered); grid points with S < 0.5 (inside walls
+and leaflets, beyond the domain) are masked.
 """
 import math
 import os
@@ -31,13 +30,14 @@ import re
 import numpy as np
 
 import vein_common as vc
+import sph_grid as sg
+from sph_grid import MASK_THRESHOLD, grid_axes, interpolate  # noqa: F401 (the vein scripts use them)
 
 # src/scenes/vein.c's defaults (the reference case, run 1 of the study)
 DEFAULTS = {"length": 0.09, "width": 0.008, "sinus_diameter": 0.014, "sinus_length": 0.04,
             "leaflet_length": 0.0256, "leaflet_gap": 1e-3, "dx": 1e-4, "wall_layers": 3}
 CLOT, CLOT_COLOR = 3, "#8b1a1a"
 H_OVER_DX = 2.5
-MASK_THRESHOLD = 0.5
 
 
 def read_options(path):
@@ -53,31 +53,16 @@ def read_options(path):
     except OSError as e:
         vc.fail(f"{path}: cannot open ({e})")
     if not text:
-        run = os.path.join(os.path.dirname(path), "run.json")
-        if os.path.isfile(run):
-            import json
-
-            try:
-                with open(run) as f:
-                    text = json.load(f).get("options", "")
-            except (OSError, ValueError):
-                text = ""
-    out, key = {}, None
-    for tok in text.split():
-        if re.match(r"^-[A-Za-z_]", tok):
-            key = tok[1:]
-            out[key] = ""
-        elif key is not None:
-            out[key] = tok
-            key = None
-    return out
+        return vc.run_options(os.path.dirname(path))
+    return sg.parse_options(text)
 
 
 def geometry(snap_path, info=None):
     """{'length', 'width', 'sinus_diameter', 'sinus_length', 'leaflet_length', 'dx',
-    'h', 'x_root', 'x_sinus_end', 'wall_layers'} [m] of the run that wrote snap_path:
-    the -vein_* options it ran with, the vein.csv comment's dx (info), else the
-    scene's defaults."""
+    'h', 'x_root', 'x_sinus_end', 'wall_layers'} [m] and 'kernel' of the run that
+    wrote snap_path: the -vein_* options it ran with, the vein.csv comment's dx
+    (info), else the scene's defaults; h and the kernel from the snapshot's sph_h and
+    sph_kernel (else -sph_h, or 2.5 dx, and Lucy)."""
     opts = read_options(snap_path)
     geo = {}
     for key, value in DEFAULTS.items():
@@ -89,108 +74,21 @@ def geometry(snap_path, info=None):
     if "vein_dx" not in opts and info and math.isfinite(info.get("dx", math.nan)):
         geo["dx"] = info["dx"]
     geo["h"] = H_OVER_DX * geo["dx"]
+    geo["kernel"] = "lucy"
+    try:
+        geo["h"] = float(opts["sph_h"]) if opts.get("sph_h") else geo["h"]
+    except ValueError:
+        pass
+    geo["kernel"] = opts.get("sph_kernel") or geo["kernel"]
+    import h5py
+
+    with h5py.File(snap_path, "r") as f:
+        meta = sg.snapshot_meta(f)
+    geo["h"] = meta["h"] or geo["h"]
+    geo["kernel"] = meta["kernel"] or geo["kernel"]
     geo["x_root"] = 0.5 * geo["length"] - 0.5 * geo["sinus_length"]
     geo["x_sinus_end"] = 0.5 * geo["length"] + 0.5 * geo["sinus_length"]
     return geo
-
-
-def lucy(q, h):
-    """The 2D Lucy kernel W(q) [1/m^2], q = r/h (0 for q >= 1)."""
-    q = np.minimum(q, 1.0)
-    return (5.0 / (math.pi * h * h)) * (1.0 + 3.0 * q) * (1.0 - q) ** 3
-
-
-def interpolate(px, py, vol, values, qx, qy, h, period=None, chunk=20000):
-    """Shepard-normalised kernel sums at the points (qx, qy) [m].
-
-    px, py, vol: the particles' positions [m] and volumes m/rho [m^2]; values: an
-    (n, k) array of particle fields; period: the x period [m] (minimum image) or
-    None. Returns (f, S): f (m, k) the normalised fields (NaN where S = 0) and S (m,)
-    the kernel sum sum_j V_j W."""
-    px = np.asarray(px, float)
-    py = np.asarray(py, float)
-    vol = np.asarray(vol, float)
-    values = np.asarray(values, float)
-    if values.ndim == 1:
-        values = values[:, None]
-    qx = np.asarray(qx, float).ravel()
-    qy = np.asarray(qy, float).ravel()
-    n, k = values.shape
-    m = qx.size
-    f = np.full((m, k), math.nan)
-    S = np.zeros(m)
-    if n == 0 or m == 0:
-        return f, S
-
-    # cells at least h wide; in a periodic x the period is a whole number of cells
-    if period:
-        ncx = max(1, int(math.floor(period / h)))
-        cwx, x_lo = period / ncx, 0.0
-        px = np.mod(px, period)
-    else:
-        x_lo = px.min() - 1e-12
-        cwx = h
-        ncx = int(math.floor((px.max() - x_lo) / cwx)) + 1
-    y_lo = py.min() - 1e-12
-    ncy = int(math.floor((py.max() - y_lo) / h)) + 1
-    cx = np.minimum((px - x_lo) // cwx, ncx - 1).astype(np.int64)
-    cy = np.minimum((py - y_lo) // h, ncy - 1).astype(np.int64)
-    # padded grid of cells: an empty ring around it (for queries beyond the particles)
-    pad_x = 0 if period else 1
-    NX, NY = ncx + 2 * pad_x, ncy + 2
-    cell = (cx + pad_x) * NY + (cy + 1)
-    order = np.argsort(cell, kind="stable")
-    counts = np.bincount(cell, minlength=NX * NY)
-    start = np.concatenate(([0], np.cumsum(counts)[:-1]))
-    M = int(counts.max())
-    table = np.full((NX * NY, M), n, dtype=np.int64)  # n: a dummy of zero volume
-    sorted_cell = cell[order]
-    table[sorted_cell, np.arange(n) - start[sorted_cell]] = order
-    PX = np.append(px, 0.0)
-    PY = np.append(py, 0.0)
-    PV = np.append(vol, 0.0)
-    PF = np.vstack([values, np.zeros((1, k))])
-
-    offsets = [(ox, oy) for ox in (-1, 0, 1) for oy in (-1, 0, 1)]
-    for a in range(0, m, chunk):
-        b = min(m, a + chunk)
-        x = qx[a:b]
-        y = qy[a:b]
-        xw = np.mod(x, period) if period else x
-        qcx = np.floor((xw - x_lo) / cwx).astype(np.int64)
-        qcy = np.floor((y - y_lo) / h).astype(np.int64)
-        qcx = np.clip(qcx, 0, ncx - 1) if period else np.clip(qcx, -1, ncx)
-        qcy = np.clip(qcy, -1, ncy)
-        cols = []
-        for ox, oy in offsets:
-            ix = np.mod(qcx + ox, ncx) if period else qcx + ox + pad_x
-            iy = qcy + oy + 1
-            ok = (ix >= 0) & (ix < NX) & (iy >= 0) & (iy < NY)
-            idx = table[np.where(ok, ix * NY + iy, 0)]
-            idx[~ok] = n
-            cols.append(idx)
-        idx = np.concatenate(cols, axis=1)  # (chunk, 9 M) candidate neighbours
-        ddx = x[:, None] - PX[idx]
-        if period:
-            ddx -= period * np.round(ddx / period)
-        r2 = ddx * ddx + (y[:, None] - PY[idx]) ** 2
-        row, col = np.nonzero(r2 < h * h)  # the pairs within the support only
-        j = idx[row, col]
-        w = lucy(np.sqrt(r2[row, col]) / h, h) * PV[j]
-        s = np.bincount(row, weights=w, minlength=b - a)
-        S[a:b] = s
-        with np.errstate(invalid="ignore", divide="ignore"):
-            for c in range(k):
-                acc = np.bincount(row, weights=w * PF[j, c], minlength=b - a)
-                f[a:b, c] = np.where(s > 0, acc / s, math.nan)
-    return f, S
-
-
-def grid_axes(x0, x1, y0, y1, spacing):
-    """Cell-centred grid coordinates [m] over [x0, x1] x [y0, y1]."""
-    nx = max(2, int(round((x1 - x0) / spacing)))
-    ny = max(2, int(round((y1 - y0) / spacing)))
-    return (x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx, y0 + (np.arange(ny) + 0.5) * (y1 - y0) / ny)
 
 
 def y_extent(geo):
@@ -234,7 +132,7 @@ def liquid_grid(d, names, geo, window, spacing=None, nx=1000, threshold=MASK_THR
     X, Y = np.meshgrid(gx, gy)
     values = np.column_stack(columns) if columns else np.zeros((int(fluid.sum()), 0))
     f, S = interpolate(d["x"][fluid, 0], d["x"][fluid, 1], vol, values, X.ravel(), Y.ravel(),
-                       geo["h"], period=geo["length"])
+                       geo["h"], period=geo["length"], kernel=geo["kernel"])
     S = S.reshape(X.shape)
     outside = ~(S >= threshold)
     fields = {}
@@ -461,15 +359,9 @@ def parse_times(text):
 
 
 def run_title(outdir, info):
-    """The run's parameters: vein.csv's comment, and nu from vein-summary.csv when
-    there is one."""
-    title = vc.case_title(info)
-    path = os.path.join(outdir, "vein-summary.csv")
-    if os.path.isfile(path):
-        nu = vc.read_summary(path).get("nu", math.nan)
-        if math.isfinite(nu):
-            title += f", ν = {nu:g} m²/s"
-    return title
+    """The run's parameters as they were (vein_common.case_title: run.json's options,
+    else vein.csv's comment and nu from vein-summary.csv)."""
+    return vc.case_title(info, outdir)
 
 
 def inlet_at(cols, t):

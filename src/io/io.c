@@ -390,6 +390,42 @@ PetscErrorCode io_finish(sim *s) {
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode io_snapshot_attribute(sim *s, const char *name, const char *text,
+                                            double value) {
+  io_state *io = &s->io;
+  int k = 0;
+  PetscFunctionBeginUser;
+  PetscCheck(strlen(name) < sizeof(io->snapshot_attributes[0].name) &&
+                 strlen(text) < sizeof(io->snapshot_attributes[0].text),
+             PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "snapshot attribute %s: name or text too long",
+             name);
+  while (k < io->n_snapshot_attributes && strcmp(io->snapshot_attributes[k].name, name))
+    k++;
+  PetscCheck(k < IO_SNAPSHOT_ATTRIBUTES, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+             "snapshot attribute %s: more than %d attributes", name, IO_SNAPSHOT_ATTRIBUTES);
+  if (k == io->n_snapshot_attributes)
+    io->n_snapshot_attributes++;
+  io_attribute *a = &io->snapshot_attributes[k];
+  PetscCall(PetscStrncpy(a->name, name, sizeof(a->name)));
+  PetscCall(PetscStrncpy(a->text, text, sizeof(a->text)));
+  a->value = value;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_snapshot_attribute_real(sim *s, const char *name, double value) {
+  PetscFunctionBeginUser;
+  PetscCall(io_snapshot_attribute(s, name, "", value));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_snapshot_attribute_string(sim *s, const char *name, const char *text) {
+  PetscFunctionBeginUser;
+  PetscCheck(text[0], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "snapshot attribute %s: an empty string", name);
+  PetscCall(io_snapshot_attribute(s, name, text, 0.0));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode io_destroy(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(s->io.options));

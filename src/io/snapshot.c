@@ -116,6 +116,21 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
     PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
     PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
     PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    /* the box, for post-processing across periodic boundaries, and the rest spacing */
+    PetscInt64 periodic[DMHS_DIM];
+    for (int k = 0; k < DMHS_DIM; k++)
+      periodic[k] = s->dom.periodic[k] ? 1 : 0;
+    PetscCall(h5io_put_reals(tmp, fid, "box_lo", s->dom.lo, DMHS_DIM));
+    PetscCall(h5io_put_reals(tmp, fid, "box_hi", s->dom.hi, DMHS_DIM));
+    PetscCall(h5io_put_int64s(tmp, fid, "periodic", periodic, DMHS_DIM));
+    PetscCall(h5io_put_reals(tmp, fid, "dx", &s->dx, 1));
+    for (int k = 0; k < s->io.n_snapshot_attributes; k++) {
+      const io_attribute *a = &s->io.snapshot_attributes[k];
+      if (a->text[0])
+        PetscCall(h5io_put_string(tmp, fid, a->name, a->text));
+      else
+        PetscCall(h5io_put_reals(tmp, fid, a->name, &a->value, 1));
+    }
   }
   PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   for (size_t k = 0; k < nf; k++) {

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/body_force.h"
 #include "dmhs/integrate.h"
 #include "sph_force.h"
@@ -191,6 +192,9 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
              "-sph_wall_extrapolation adami",
              s->scn->name);
   PetscCall(sph_wall_create(&d->wall));
+  /* in every snapshot: what interpolating the fields needs (scripts/post/sph_grid.py) */
+  PetscCall(io_snapshot_attribute_string(s, "sph_kernel", sph_kernel_names[sp->kernel]));
+  PetscCall(io_snapshot_attribute_real(s, "sph_h", sp->h));
   /* the vectorised sweep walks the cells; walls, summation density, the correction and the
    * stress diagnostics and the artificial pressure read the pair list */
   if (sph_force_cells_applies(sp) && !d->has_walls && sp->tensile_eps == 0 &&

@@ -110,6 +110,13 @@ set_tests_properties(cli_vein_study_script PROPERTIES LABELS cli TIMEOUT 120)
 add_test(NAME cli_colon_study_script COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/colon_study.sh ${PROJECT_SOURCE_DIR}
   ${DMHS_CLI_OUT}/colon-study)
 set_tests_properties(cli_colon_study_script PROPERTIES LABELS cli TIMEOUT 60)
+# every scripts/slurm/*.sbatch with --dry-run outside Slurm: the srun command (and with RESUBMIT=1 the
+# sbatch) it would run, nothing run, a restart and a skip, bad task ids and a missing options file
+# refused; the site placeholders (account, partition, modules) and how to change tasks and time
+# (test/cli/slurm_dry_run.sh)
+add_test(NAME cli_slurm_dry_run COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slurm_dry_run.sh ${PROJECT_SOURCE_DIR}
+  ${DMHS_CLI_OUT}/slurm-dry-run)
+set_tests_properties(cli_slurm_dry_run PROPERTIES LABELS cli TIMEOUT 60)
 # the colon study's inputs parse (read from the repository root, as they read input/intestine.opts) and
 # -help shows their overrides
 foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081>"
@@ -132,6 +139,12 @@ endforeach()
 add_test(NAME cli_colon_study_plot COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/colon_study_plot.py
   ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_study.py ${DMHS_CLI_OUT}/colon-study-plot)
 set_tests_properties(cli_colon_study_plot PROPERTIES LABELS cli TIMEOUT 60)
+# scripts/post/sph_grid.py, the kernel interpolation behind plot_fields.py and the vein's maps, on
+# synthetic lattices: the kernels' normalisation, periodic boxes (sums across the boundary, periods
+# of 2 and 3 cells), a free edge (test/cli/sph_grid_selftest.py)
+add_test(NAME cli_sph_grid_selftest COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/sph_grid_selftest.py
+  ${PROJECT_SOURCE_DIR}/scripts/post)
+set_tests_properties(cli_sph_grid_selftest PROPERTIES LABELS cli TIMEOUT 60)
 # the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
 add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* ETA +0.0 s" --reject "ETA +-" --
   ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5

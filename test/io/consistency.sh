@@ -18,6 +18,13 @@ with h5py.File(os.path.join(d, "snap_000004.h5"), "r") as f:
     assert b"-channel_nx 10" in a["options"], a["options"]
     assert f["particles/x"].shape == (260, 3) and (f["particles/x"][:, 2] == 0).all()
     assert sorted(f["particles/gid"][()]) == list(range(260))
+    # the box and the kernel, for post-processing (scripts/post/sph_grid.py): periodic along the
+    # channel (x in [0, 5e-4] m), bounded across it, dx = 1e-3 m / 20 rows, h as given
+    assert list(a["box_lo"]) == [0, a["box_lo"][1]] and a["box_lo"][1] < 0, dict(a)
+    assert a["box_hi"][0] == 5e-4 and a["box_hi"][1] > 1e-3, dict(a)
+    assert list(a["periodic"]) == [1, 0], dict(a)
+    assert abs(a["dx"][0] - 5e-5) < 1e-18 and a["sph_h"][0] == 1.5e-4, dict(a)
+    assert a["sph_kernel"] == b"lucy", dict(a)
 run = json.load(open(os.path.join(d, "run.json")))
 for k in ("dmhs_version", "options", "ranks", "start", "end", "status"):
     assert k in run, k

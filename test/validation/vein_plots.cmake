@@ -1,12 +1,13 @@
-# Plots of the vein quick runs (scripts/post/plot_vein_*.py): each script writes
-# its PNG into ${DMHS_VEIN_OUT}/plots (emptied first by validation_vein_plots_clean)
-# and fails on a missing or incomplete input; validation_vein_plots_check then
-# asserts that every PNG exists and is larger than 10 kB. The file that includes
+# Plots of the vein quick runs (scripts/post/plot_vein_*.py, and plot_fields.py):
+# each script writes its PNG (or GIF) into ${DMHS_VEIN_OUT}/plots (emptied first by
+# validation_vein_plots_clean) and fails on a missing or incomplete input;
+# validation_vein_plots_check then asserts that every file exists and is larger
+# than 10 kB. The file that includes
 # this one defines DMHS_PYTHON, DMHS_VEIN_OUT and the fixtures vein_quick and
 # vein_quick_2ranks.
 #
 # Run as a script, it is that check:
-#   cmake -P vein_plots.cmake PNG...   (exit 1 when a PNG is missing or <= 10 kB)
+#   cmake -P vein_plots.cmake FILE...   (exit 1 when a file is missing or <= 10 kB)
 if(CMAKE_SCRIPT_MODE_FILE)
   math(EXPR last "${CMAKE_ARGC} - 1")
   if(last LESS 3)
@@ -100,12 +101,56 @@ add_test(NAME validation_vein_plot_convergence
 set_tests_properties(validation_vein_plot_convergence PROPERTIES LABELS validation TIMEOUT 120
                      FIXTURES_REQUIRED "vein_quick;vein_quick_2ranks;vein_plots_clean" FIXTURES_SETUP vein_plots)
 
+# scripts/post/plot_fields.py, the general field plotter, on the quick run: one field at one
+# time as a PNG, a time series as a GIF (PillowWriter: not run when this Python has no
+# pillow), the field list with units; and its clean failures (exit status 1, one line): a
+# missing directory, a directory without snapshots, an unknown field (naming the fields),
+# a time outside the run
+set(DMHS_PLOT_FIELDS ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_fields.py)
+add_test(NAME validation_plot_fields_png
+         COMMAND ${DMHS_EXPECT_OUTPUT} "fields_p\\.png: p \\[Pa\\] at t = 0\\.(2|199)"
+                 -- ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/quick --field p --time 0.2
+                 --out ${DMHS_VEIN_PLOTS}/fields_p.png)
+add_test(NAME validation_plot_fields_gif
+         COMMAND ${DMHS_EXPECT_OUTPUT} "fields_speed\\.gif: 11 frame\\(s\\) of speed \\[m/s\\], t = 0 \\.\\. 0\\.5"
+                 -- ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/quick --field speed --every 5
+                 --animate ${DMHS_VEIN_PLOTS}/fields_speed.gif)
+add_test(NAME validation_plot_fields_list
+         COMMAND ${DMHS_EXPECT_OUTPUT} "p +\\[Pa\\] +scalar.* v +\\[m/s\\] +vector: v \\(magnitude\\), v_x, v_y"
+                 -- ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/quick --list --time 0.25)
+set_tests_properties(validation_plot_fields_png validation_plot_fields_gif validation_plot_fields_list
+                     PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED "vein_quick;vein_plots_clean" FIXTURES_SETUP vein_plots)
+execute_process(COMMAND ${DMHS_PYTHON} -c "import PIL" RESULT_VARIABLE _pillow OUTPUT_QUIET ERROR_QUIET)
+if(NOT _pillow EQUAL 0)
+  message(WARNING "${DMHS_PYTHON} cannot import PIL (pillow): validation_plot_fields_gif will not run "
+    "(Debian: apt-get install python3-pil)")
+  set_tests_properties(validation_plot_fields_gif PROPERTIES DISABLED TRUE)
+endif()
+add_test(NAME validation_plot_fields_missing_dir
+         COMMAND ${DMHS_EXPECT_FAIL} "no-such-run: no such directory" --lines 1 --
+                 ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/no-such-run --field p)
+add_test(NAME validation_plot_fields_no_snapshot
+         COMMAND ${DMHS_EXPECT_FAIL} "plot_fields.py: .*/input: no snapshot \\(no particles\\.xdmf, no snap_\\*\\.h5" --lines 1 --
+                 ${DMHS_PLOT_FIELDS} ${PROJECT_SOURCE_DIR}/input --field p)
+set_tests_properties(validation_plot_fields_missing_dir validation_plot_fields_no_snapshot PROPERTIES
+                     LABELS validation TIMEOUT 60)
+add_test(NAME validation_plot_fields_unknown_field
+         COMMAND ${DMHS_EXPECT_FAIL} "unknown field 'pressure' in snap_[0-9]+\\.h5; fields: a, a_x, a_y, .* p, .* v, v_x, v_y" --lines 1 --
+                 ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/quick --field pressure)
+add_test(NAME validation_plot_fields_time_outside
+         COMMAND ${DMHS_EXPECT_FAIL} "--time 9 s is outside the run: its [0-9]+ snapshot\\(s\\) span t = 0 \\.\\. 0\\.5" --lines 1 --
+                 ${DMHS_PLOT_FIELDS} ${DMHS_VEIN_OUT}/quick --field p --time 9)
+set_tests_properties(validation_plot_fields_unknown_field validation_plot_fields_time_outside PROPERTIES
+                     LABELS validation TIMEOUT 60 FIXTURES_REQUIRED vein_quick)
+
 add_test(NAME validation_vein_plots_check
          COMMAND ${CMAKE_COMMAND} -P ${CMAKE_CURRENT_LIST_FILE}
                  ${DMHS_VEIN_PLOTS}/vein_fields.png ${DMHS_VEIN_PLOTS}/vein_sinus.png
                  ${DMHS_VEIN_PLOTS}/vein_probe.png ${DMHS_VEIN_PLOTS}/vein_geometry.png
                  ${DMHS_VEIN_PLOTS}/vein_study_ka.png ${DMHS_VEIN_PLOTS}/vein_study_velocity.png
                  ${DMHS_VEIN_PLOTS}/vein_inlet.png ${DMHS_VEIN_PLOTS}/vein_convergence.png
-                 ${DMHS_VEIN_PLOTS}/vein_vectors.png ${DMHS_VEIN_PLOTS}/vein_closure.png)
+                 ${DMHS_VEIN_PLOTS}/vein_vectors.png ${DMHS_VEIN_PLOTS}/vein_closure.png
+                 ${DMHS_VEIN_PLOTS}/fields_p.png ${DMHS_VEIN_PLOTS}/fields_speed.gif)
 set_tests_properties(validation_vein_plots_check PROPERTIES LABELS validation TIMEOUT 30
                      FIXTURES_REQUIRED vein_plots)
