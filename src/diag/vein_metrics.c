@@ -34,6 +34,7 @@
 #include "dmhs/stress.h"
 #include "dmhs/gather.h"
 #include "dmhs/checkpoint.h"
+#include "vein_cycle_peaks.h"
 #include "dmhs/csv.h"
 #include "dmhs/liquid_state.h"
 #include "vein_leaflets.h"
@@ -320,22 +321,9 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
   PetscInt n_cycles = 0;
   PetscFunctionBeginUser;
   vein_mean_std(v->n_hist ? &v->hist[0][2] : NULL, v->n_hist, 3, &disp_mean, &disp_std);
-  /* the peak of the probe's stress in every completed cycle it was followed through */
-  const PetscInt max_cycles = T > 0 ? (PetscInt)floor(s->t / T + 1e-9) + 1 : 0;
-  PetscCall(PetscMalloc1(max_cycles + 1, &peaks));
-  for (PetscInt c = 0; c < max_cycles; c++) {
-    double best = -1;
-    PetscInt rows = 0;
-    for (PetscInt k = 0; k < v->n_hist; k++)
-      if (v->hist[k][0] > c * T + 1e-9 * T && v->hist[k][0] <= (c + 1) * T + 1e-9 * T) {
-        best = PetscMax(best, v->hist[k][1]);
-        rows++;
-      }
-    /* a completed cycle, entirely after the probe was chosen */
-    if (rows && (c + 1) * T <= s->t + 1e-9 * T && v->n_hist &&
-        v->hist[0][0] <= c * T + 0.25 * T + 1e-9 * T)
-      peaks[n_cycles++] = best;
-  }
+  /* the peak of the probe's stress in every whole cycle it was followed through */
+  PetscCall(PetscMalloc1(vein_cycle_peaks_max(T, s->t) + 1, &peaks));
+  n_cycles = vein_cycle_peaks((const double(*)[3])v->hist, v->n_hist, T, s->t, peaks);
   if (n_cycles)
     vein_mean_std(peaks, n_cycles, 1, &peak_mean, &peak_std);
   PetscCall(PetscFree(peaks));

@@ -96,6 +96,17 @@ def mode_run(args):
     probe = [p for p in col(names, rows, "probe_gid") if p is not None]
     if not probe or len(set(probe)) != 1:
         fail("the measurement point was not chosen (or changed)")
+    # the summary's peak stress covers every whole cycle from the one in which the point was chosen
+    # by its quarter period on (rows and the run's end land within a step of their nominal times)
+    T, tol = summary["period"], 1e-3 * summary["period"]
+    t_probe = next(a for a, p in zip(t, col(names, rows, "probe_gid")) if p is not None)
+    want = sum(1 for c in range(int(t[-1] / T + 1e-3) + 1)
+               if (c + 1) * T <= t[-1] + tol and t_probe <= c * T + 0.25 * T + tol)
+    print(f"  measurement point chosen at t = {t_probe:.7g} s; whole cycles since: {want}, "
+          f"in the summary: {summary['n_cycles']:g}")
+    if summary["n_cycles"] != want:
+        fail(f"vein-summary.csv counts {summary['n_cycles']:g} cycles of peak stress, not the {want} whole "
+             f"cycles after the point was chosen at t = {t_probe:.7g} s (T = {T:g} s, run to {t[-1]:.7g} s)")
     if args.compare:
         compare_files(args.outdir, args.compare, CSVS)
     print("PASS")
