@@ -26,6 +26,7 @@
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
 #include "dmhs/stop_signal.h"
+#include "dmhs/build_info.h"
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
                                               NULL};
@@ -154,8 +155,8 @@ static PetscErrorCode sim_view(sim *s) {
   for (int t = 0; t < PTYPE_COUNT; t++)
     n_local[t] = particles_count_type(&s->ps, (particle_type)t);
   PetscCallMPI(MPI_Allreduce(n_local, n, PTYPE_COUNT, MPIU_INT, MPI_SUM, s->comm));
-  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s: scene %s on %d rank(s)\n", DMHS_VERSION,
-                                   s->scn->name, (int)s->size));
+  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s (commit %s): scene %s on %d rank(s)\n", DMHS_VERSION,
+                                   dmhs_commit, s->scn->name, (int)s->size));
   PetscCall(PetscViewerASCIIPrintf(v,
                                    "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT
                                    " wall, %" PetscInt_FMT " solid; rest spacing dx = %g m\n",
