@@ -56,9 +56,11 @@ PetscErrorCode io_setup(struct sim *s);
 PetscErrorCode io_restart(struct sim *s);
 /* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false. */
 PetscErrorCode io_output(struct sim *s);
-/* After every step (and before the first): checkpoint at the interval or on a stop signal
- * (stop_signal.h) that any rank got; then *stop, and run.json says "signal-checkpoint". */
-PetscErrorCode io_after_step(struct sim *s, PetscBool *stop);
+/* After every step (and before the first), on every rank: checkpoint at the interval or on a
+ * stop signal (stop_signal.h); any_signal is the one any rank got (the step loop reduced
+ * stop_signal_pending() over the ranks), 0 if none: then *stop, and run.json says
+ * "signal-checkpoint". */
+PetscErrorCode io_after_step(struct sim *s, int any_signal, PetscBool *stop);
 /* Rank 0 rewrites run.json ("running") with the time of now as its heartbeat: the run is
  * alive. A write that fails is said once and does not stop the run. */
 PetscErrorCode io_heartbeat(struct sim *s);

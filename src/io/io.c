@@ -4,8 +4,9 @@
  * Signals: SIGTERM, SIGINT and SIGUSR1 (what batch systems, timeout, mpirun and
  * Ctrl-C send) only set a flag (stop_signal.c, which also says when a repeat
  * kills); after every step, and before the first, the ranks agree on it with
- * one MPI_Allreduce (a signal any one rank got stops them all), write a
- * checkpoint, record "signal-checkpoint" in run.json and stop cleanly.
+ * one MPI_Allreduce (the step loop's, src/driver/run.c: a signal any one rank
+ * got stops them all), write a checkpoint, record "signal-checkpoint" in
+ * run.json and stop cleanly.
  *
  * run.json (rank 0, rewritten atomically): dmhs_version, commit (build_info.h),
  * scene, ranks, host and pid (rank 0's), options, restart_from, start, end,
@@ -376,14 +377,11 @@ static PetscErrorCode io_checkpoint(sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
+PetscErrorCode io_after_step(sim *s, int any, PetscBool *stop) {
   io_state *io = &s->io;
-  int mine = stop_signal_pending(), any;
   PetscBool due = PETSC_FALSE;
   PetscFunctionBeginUser;
   *stop = PETSC_FALSE;
-  /* every rank must take the same branch: the checkpoint is collective */
-  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, s->comm));
   if (io->checkpoint_interval > 0 && s->t >= io->next_checkpoint_t - 0.5 * s->dt) {
     due = PETSC_TRUE;
     while (io->next_checkpoint_t <= s->t + 0.5 * s->dt)

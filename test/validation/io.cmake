@@ -28,6 +28,11 @@ add_test(NAME io_restart_ranks COMMAND bash ${DMHS_IO_DIR}/restart_ranks.sh ${DM
   -- ${DMHS_IO_OUT}/restart_ranks)
 set_tests_properties(io_restart_ranks PROPERTIES LABELS "io;mpi" TIMEOUT 120)
 
+# The progress lines (one after every step, rank 0's clock deciding) change no output, on 2 ranks.
+add_test(NAME io_progress_bitwise COMMAND bash ${DMHS_IO_DIR}/progress_bitwise.sh ${DMHS_EXE} ${DMHS_PYTHON}
+  ${DMHS_MPIRUN} -- ${DMHS_IO_OUT}/progress_bitwise)
+set_tests_properties(io_progress_bitwise PROPERTIES LABELS "io;mpi" PROCESSORS 2 TIMEOUT 180)
+
 # Fault injection (label faults): a full disk (a small tmpfs; skipped without root/mount), and
 # test/io/faults.py: SIGTERM / SIGKILL while a checkpoint or a snapshot is being written, a
 # temporary name taken by a directory, a truncated and a bit-flipped checkpoint. Each must leave
