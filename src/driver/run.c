@@ -27,6 +27,7 @@
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
 #include "dmhs/stop_signal.h"
+#include "dmhs/console_log.h"
 #include "dmhs/build_info.h"
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
@@ -226,6 +227,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(sim_check_unused_options(s));
 
   PetscCall(sim_prepare_output_dir(s));
+  /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
+  PetscCall(console_log_open(s->output_dir, s->io.restart_file));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(s->scn->build(s->scn, s));
   double reach = 0;
