@@ -7,6 +7,7 @@
 #   scripts/vein_study.sh --ids "1 2 3" --jobs 1 --ranks 2
 #   scripts/vein_study.sh --collect bench/results/vein-study   # copy the finished runs' CSVs
 #   scripts/vein_study.sh --ids "" --clot-seeds "1 2 3 4 5"     # Fig. 4.11: run 19 with clots
+#   scripts/vein_study.sh --status                 # what each run is doing (scripts/run_state.sh)
 #
 # Options:
 #   --ids "ID ..."    runs of the table (default: 1 2 3 4 5 6 8 19 24 25 29 30 31 32)
@@ -20,11 +21,15 @@
 #   --collect DEST    no run: copy vein-summary.csv, vein.csv (every 5th row), vein-sinus.csv
 #                     (cycle ends only) and run.json of every completed run into DEST/run<ID>/
 #                     (and, for clot runs, clots.csv, into DEST/clot-seed<S>/)
+#   --status          no run: one line per run with its state (scripts/run_state.sh: completed,
+#                     running, stalled, died, signal-checkpoint, error, not started)
 #   -- OPTIONS        further dmhs options for every run (e.g. -- -t_end 4)
 # Environment: DMHS_BUILD_DIR (default build), DMHS_EXE (default <build>/dmhs).
 #
-# A run whose run.json says "completed" is skipped; one with a checkpoint.h5
-# continues from it (-restart). Ctrl-C or SIGTERM asks every running run to
+# A run whose run.json says "completed" is skipped, and so is one that is
+# still going (run_state.sh: "running" or "stalled", e.g. started by another
+# driver); one with a checkpoint.h5 continues from it (-restart), also one
+# that died (killed, its node lost: run.json still says running). Ctrl-C or SIGTERM asks every running run to
 # checkpoint and stop (dmhs writes checkpoint.h5 on SIGTERM), then the driver
 # exits; start it again with the same arguments to continue. Each run's
 # terminal output goes to DIR/run<ID>.log. Run from anywhere: the inputs are
@@ -32,11 +37,13 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ids="1 2 3 4 5 6 8 19 24 25 29 30 31 32"
-seeds="" jobs=2 ranks=1 out="$HOME/dmhs-runs/vein-study" study="input/vein-study.opts" collect=""
+seeds="" jobs=2 ranks=1 out="$HOME/dmhs-runs/vein-study" study="input/vein-study.opts" collect="" status_only=0
 extra=()
 die() { echo "vein_study: $*" >&2; exit 2; }
 # the "status" of DIR/run.json (not "previous_status"), or nothing
 run_status() { sed -n 's/^  "status": "\([a-z-]*\)".*/\1/p' "$1/run.json" 2>/dev/null | head -n 1; }
+# the status with "running" told apart: running, stalled or died (scripts/run_state.sh)
+run_state() { bash "$repo/scripts/run_state.sh" --state "$1"; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --ids) ids="${2?--ids needs a list}"; shift 2 ;;
@@ -46,6 +53,7 @@ while [ $# -gt 0 ]; do
     --out) out="${2:?--out needs a directory}"; shift 2 ;;
     --study) study="${2:?--study needs a file or none}"; shift 2 ;;
     --collect) collect="${2:?--collect needs a directory}"; shift 2 ;;
+    --status) status_only=1; shift ;;
     --) shift; extra=("$@"); break ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown argument '$1' (see --help)" ;;
@@ -71,6 +79,11 @@ run_opts() {
     clot-seed*) echo "-options_file input/vein-clot.opts -agglomeration_seed ${1#clot-seed}" ;;
   esac
 }
+
+if [ "$status_only" = 1 ]; then
+  for name in "${names[@]}"; do bash "$repo/scripts/run_state.sh" "$out/$name"; done
+  exit 0
+fi
 
 if [ -n "$collect" ]; then
   n=0
@@ -115,11 +128,17 @@ trap stop INT TERM
 
 # One run, in its own session so that a Ctrl-C reaches it once, through the driver.
 start_run() {
-  local name=$1 dir="$out/$1" restart=() own
-  if [ "$(run_status "$dir")" = completed ]; then
+  local name=$1 dir="$out/$1" restart=() own state
+  state=$(run_state "$dir")
+  case "$state" in
+  completed)
     echo "vein_study: $name already completed ($dir)"
-    return 1
-  fi
+    return 1 ;;
+  running | stalled) # two runs in one directory would overwrite each other's files
+    echo "vein_study: $name is $state, not started again: $(bash "$repo/scripts/run_state.sh" "$dir")"
+    return 1 ;;
+  died) echo "vein_study: $name died (its run.json still says running)" ;;
+  esac
   if [ -f "$dir/checkpoint.h5" ]; then
     restart=(-restart "$dir/checkpoint.h5")
     echo "vein_study: $name continues from $dir/checkpoint.h5"
@@ -156,8 +175,8 @@ while [ "${#pids[@]}" -gt 0 ]; do wait_one; done
 status=0
 for name in "${names[@]}"; do
   dir="$out/$name"
-  s=$(run_status "$dir")
-  echo "vein_study: $name: ${s:-not started} ($dir)"
+  s=$(run_state "$dir")
+  echo "vein_study: $name: $s ($dir)"
   [ "$s" = completed ] || status=1
 done
 [ "$failed" -eq 0 ] || echo "vein_study: $failed run(s) ended with an error: see $out/<run>.log" >&2

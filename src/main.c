@@ -4,6 +4,7 @@
 #include <strings.h>
 #include "dmhs/driver.h"
 #include "dmhs/options_files.h"
+#include "dmhs/console_log.h"
 
 static const char help[] =
     "dmhs: SPH liquid coupled with mass-spring solids (Discrete Multi-Hybrid System).\n"
@@ -27,15 +28,24 @@ static PetscErrorCode dmhs_error_handler(MPI_Comm comm, int line, const char *fu
     MPI_Initialized(&mpi_up);
     if (mpi_up)
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    char out[2200];
     options_files_explain(mess ? mess : "(no message)", text, sizeof(text));
-    fprintf(stderr, "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, text);
-    if (trace)
-      fprintf(stderr, "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
+    snprintf(out, sizeof(out), "dmhs: error%s%.0d: %s\n", rank ? " on rank " : "", rank, text);
+    fputs(out, stderr);
+    console_log_add_line(out); /* dmhs.log, when rank 0's is open */
+    if (trace) {
+      snprintf(out, sizeof(out), "dmhs:   (raised in %s() at %s:%d)\n", func, file, line);
+      fputs(out, stderr);
+      console_log_add_line(out);
+    }
     if (!first_error[0])
       snprintf(first_error, sizeof(first_error), "%.511s", text);
     fflush(stderr);
   } else if (trace) {
-    fprintf(stderr, "dmhs:   (called from %s() at %s:%d)\n", func, file, line);
+    char out[512];
+    snprintf(out, sizeof(out), "dmhs:   (called from %s() at %s:%d)\n", func, file, line);
+    fputs(out, stderr);
+    console_log_add_line(out);
     fflush(stderr);
   }
   return n;
@@ -121,6 +131,8 @@ int main(int argc, char **argv) {
     options_files_free();
     return 1;
   }
+  /* rank 0's console, copied into <output_dir>/dmhs.log once that exists (sim_create) */
+  PetscCall(console_log_start(PETSC_COMM_WORLD));
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
   if (traceback)
     PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
@@ -136,13 +148,15 @@ int main(int argc, char **argv) {
     if (size > 1)
       MPI_Abort(PETSC_COMM_WORLD, 1);
     PetscCall(PetscFinalize());
+    console_log_stop();
     options_files_free();
     return 1;
   }
   PetscCall(sim_destroy(&s));
   if (traceback)
     PetscCall(PetscPopErrorHandler());
-  PetscCall(PetscFinalize());
+  PetscCall(PetscFinalize()); /* -log_view prints here: still copied to dmhs.log */
+  console_log_stop();
   options_files_free();
   return 0;
 }

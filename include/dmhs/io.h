@@ -3,9 +3,9 @@
  * -checkpoint_at_end, -restart) are read in one options pass; snapshots and
  * the XDMF index are written at every output time and at the end,
  * checkpoints at an interval, at the end and when SIGTERM / SIGINT / SIGUSR1
- * arrives; <output_dir>/run.json records version, options, rank count,
- * start/end time, the exit status and, at the end, the halo's sizes over the
- * ranks. */
+ * arrives; <output_dir>/run.json records version, commit, options, rank
+ * count, host and pid, start/end time, a heartbeat, the exit status and, at the
+ * end, the halo's sizes over the ranks. */
 #ifndef DMHS_IO_H
 #define DMHS_IO_H
 #include <petscsys.h>
@@ -43,6 +43,9 @@ typedef struct io_state {
   char *options;                 /* resolved options (PetscOptionsGetAll) */
   char start_time[32];           /* ISO 8601, UTC */
   char previous_status[32];      /* status in the run.json this run replaced ("" = none) */
+  char host[256];                /* rank 0's host name (run.json) */
+  double heartbeat_interval;     /* [s] the next heartbeat comes within this (0: unknown) */
+  PetscBool heartbeat_failed;    /* the last heartbeat could not be written (said then) */
   PetscBool run_json_started;
   PetscBool halo_known; /* halo holds the sizes of the last build (the run reached its end) */
   halo_stats halo;      /* run.json "halo" */
@@ -65,9 +68,14 @@ PetscErrorCode io_setup(struct sim *s);
 PetscErrorCode io_restart(struct sim *s);
 /* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false. */
 PetscErrorCode io_output(struct sim *s);
-/* After every step (and before the first): checkpoint at the interval or on a stop signal
- * (stop_signal.h) that any rank got; then *stop, and run.json says "signal-checkpoint". */
-PetscErrorCode io_after_step(struct sim *s, PetscBool *stop);
+/* After every step (and before the first), on every rank: checkpoint at the interval or on a
+ * stop signal (stop_signal.h); any_signal is the one any rank got (the step loop reduced
+ * stop_signal_pending() over the ranks), 0 if none: then *stop, and run.json says
+ * "signal-checkpoint". */
+PetscErrorCode io_after_step(struct sim *s, int any_signal, PetscBool *stop);
+/* Rank 0 rewrites run.json ("running") with the time of now as its heartbeat: the run is
+ * alive. A write that fails is said once and does not stop the run. */
+PetscErrorCode io_heartbeat(struct sim *s);
 /* The end checkpoint (-checkpoint_at_end), unless one was written at this step. */
 PetscErrorCode io_checkpoint_at_end(struct sim *s);
 /* After the loop: final checkpoint (-checkpoint_at_end), run.json with the exit status. */

@@ -46,8 +46,8 @@ PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const ch
 /* Every value the readers returned is recorded (the last one per option).
  * options_physics: "name value\n" lines, sorted, of the recorded options that
  * are not run control (-t_end, -output_*, -checkpoint_*, -restart*, -quiet,
- * -progress_interval, -dump_final, -debug_*, -partition_imbalance, -preflight):
- * what a checkpoint stores. PetscFree it. */
+ * -progress_interval, -progress_wall_interval, -dump_final, -debug_*,
+ * -partition_imbalance, -preflight): what a checkpoint stores. PetscFree it. */
 PetscErrorCode options_physics(char **text);
 /* The differences between a stored options_physics text and the current one,
  * "-name X in the checkpoint, Y now; ..." in report, and how many. */

@@ -18,6 +18,7 @@
 #include "dmhs/topology.h"
 #include "dmhs/options.h" /* checked option readers, in every module */
 #include "dmhs/timestep.h"
+#include "dmhs/progress.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -35,6 +36,7 @@ typedef struct sim {
   PetscInt last_output_step; /* the step of the last output (-1: none in this session) */
   PetscBool final_output;    /* the run's final output, its last step not an output time */
   double progress_interval, next_progress_t;
+  progress_clock progress; /* the wall-clock lines and the projection (progress.c) */
   char output_dir[PETSC_MAX_PATH_LEN];
   PetscBool quiet;
   preflight_action preflight;

@@ -6,7 +6,8 @@
  * + pair list
  *   -> modules' compute (forces, density rates) -> second kick
  *   -> state check (stop before any NaN is written) -> modules' and scene's post_step
- *   -> the due diagnostics (each on its own schedule, diagnostic.h) -> output -> progress
+ *   -> the due diagnostics (each on its own schedule, diagnostic.h) -> output
+ *   -> one reduction: a stop signal on any rank, rank 0's clock -> progress (progress.h)
  *   -> checkpoint at the interval, or on a stop signal (and stop)
  * After the loop, a final output when the last step was not an output time. */
 #include <errno.h>
@@ -26,6 +27,8 @@
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
 #include "dmhs/stop_signal.h"
+#include "dmhs/console_log.h"
+#include "dmhs/build_info.h"
 
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
                                               NULL};
@@ -46,11 +49,6 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscCall(PetscOptionsReal("-output_interval",
                              "Physical time between output rows/snapshots [s] (0 = t_end/100)",
                              NULL, s->output_interval, &s->output_interval, NULL));
-  PetscCall(PetscOptionsReal("-progress_interval",
-                             "Physical time between progress lines [s] (0 = t_end/20)", NULL,
-                             s->progress_interval, &s->progress_interval, NULL));
-  PetscCall(
-      PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
   PetscCall(PetscOptionsReal(
       "-neighbour_skin",
       "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
@@ -67,12 +65,11 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
              "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
   PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-output_interval must be >= 0 (got %g)", s->output_interval);
-  PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-progress_interval must be >= 0 (got %g)", s->progress_interval);
   if (s->output_interval == 0)
     s->output_interval = s->t_end / 100;
-  if (s->progress_interval == 0)
-    s->progress_interval = s->t_end / 20;
+  PetscCall(progress_set_from_options(s));
+  /* run.json: how often a live run's heartbeat comes at the latest */
+  s->io.heartbeat_interval = s->progress.wall_interval;
   PetscFunctionReturn(0);
 }
 
@@ -154,8 +151,8 @@ static PetscErrorCode sim_view(sim *s) {
   for (int t = 0; t < PTYPE_COUNT; t++)
     n_local[t] = particles_count_type(&s->ps, (particle_type)t);
   PetscCallMPI(MPI_Allreduce(n_local, n, PTYPE_COUNT, MPIU_INT, MPI_SUM, s->comm));
-  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s: scene %s on %d rank(s)\n", DMHS_VERSION,
-                                   s->scn->name, (int)s->size));
+  PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s (commit %s): scene %s on %d rank(s)\n", DMHS_VERSION,
+                                   dmhs_commit, s->scn->name, (int)s->size));
   PetscCall(PetscViewerASCIIPrintf(v,
                                    "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT
                                    " wall, %" PetscInt_FMT " solid; rest spacing dx = %g m\n",
@@ -230,6 +227,8 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(sim_check_unused_options(s));
 
   PetscCall(sim_prepare_output_dir(s));
+  /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
+  PetscCall(console_log_open(s->output_dir, s->io.restart_file));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(s->scn->build(s->scn, s));
   double reach = 0;
@@ -285,9 +284,23 @@ static PetscErrorCode sim_final_output(sim *s) {
   PetscFunctionReturn(0);
 }
 
+/* What every rank must decide alike after a step, in the loop's one reduction: a stop signal
+ * that any rank got, and whether rank 0's wall clock calls for a progress line (the ranks'
+ * clocks differ). */
+static PetscErrorCode sim_agree_after_step(sim *s, int *stop_signal, PetscBool *progress_due) {
+  int mine[2] = {stop_signal_pending(), s->rank == 0 && progress_wall_due(s)}, all[2];
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, s->comm));
+  *stop_signal = all[0];
+  *progress_due = all[1] ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode sim_run(sim *s) {
   PetscInt n_owned_global, n_local = s->ps.n_owned;
   PetscBool stop; /* io: checkpoint at the interval; on a stop signal also stop */
+  PetscBool progress_due;
+  int stop_signal;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscLogStagePush(events.stage_steps));
@@ -300,8 +313,10 @@ PetscErrorCode sim_run(sim *s) {
     s->last_output_step = s->step;
   }
   s->loop_start_wtime = MPI_Wtime();
+  progress_start(s);
   /* a signal during the setup stops here, with a checkpoint of the initial state */
-  PetscCall(io_after_step(s, &stop));
+  PetscCall(sim_agree_after_step(s, &stop_signal, &progress_due));
+  PetscCall(io_after_step(s, stop_signal, &stop));
   /* stop at the step nearest t_end */
   while (!stop && s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
@@ -328,12 +343,9 @@ PetscErrorCode sim_run(sim *s) {
       s->next_output_t += s->output_interval;
       s->last_output_step = s->step;
     }
-    if (s->t >= s->next_progress_t - 0.5 * s->dt) {
-      if (!s->quiet)
-        PetscCall(progress_print(s));
-      s->next_progress_t += s->progress_interval;
-    }
-    PetscCall(io_after_step(s, &stop));
+    PetscCall(sim_agree_after_step(s, &stop_signal, &progress_due));
+    PetscCall(progress_after_step(s, progress_due));
+    PetscCall(io_after_step(s, stop_signal, &stop));
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
   PetscCall(sim_final_output(s));

@@ -4,16 +4,21 @@
  * Signals: SIGTERM, SIGINT and SIGUSR1 (what batch systems, timeout, mpirun and
  * Ctrl-C send) only set a flag (stop_signal.c, which also says when a repeat
  * kills); after every step, and before the first, the ranks agree on it with
- * one MPI_Allreduce (a signal any one rank got stops them all), write a
- * checkpoint, record "signal-checkpoint" in run.json and stop cleanly.
+ * one MPI_Allreduce (the step loop's, src/driver/run.c: a signal any one rank
+ * got stops them all), write a checkpoint, record "signal-checkpoint" in
+ * run.json and stop cleanly.
  *
- * run.json (rank 0, rewritten atomically): dmhs_version, scene, ranks,
- * options, restart_from, start, end (ISO 8601 UTC), status ("running",
- * "completed", "signal-checkpoint", "error"), step, t, checkpoint, message,
- * previous_status (the status in the run.json this run replaced: "running"
- * there means that run was killed, or is still going) and, once the step
- * loop has ended, halo (the sizes of the last neighbour build over the ranks:
- * halo_stats.c). */
+ * run.json (rank 0, rewritten atomically): dmhs_version, commit (build_info.h),
+ * scene, ranks, host and pid (rank 0's), options, restart_from, start, end,
+ * heartbeat (ISO 8601 UTC: the time of this write; a live run writes one at
+ * every progress line and checkpoint) and heartbeat_interval (the wall seconds
+ * within which the next comes, or null), status ("running", "completed",
+ * "signal-checkpoint", "error"), step, t, checkpoint, message, previous_status
+ * (the status in the run.json this run replaced: "running" there means that run
+ * was killed, or is still going) and, once the step loop has ended, halo (the
+ * sizes of the last neighbour build over the ranks: halo_stats.c). "running"
+ * with a pid gone from its host, or a heartbeat older than two intervals, is a
+ * run that died (scripts/run_state.sh). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +34,7 @@
 #include "dmhs/migrate.h"
 #include "dmhs/integrate.h"
 #include "dmhs/stop_signal.h"
+#include "dmhs/build_info.h"
 #include "h5check.h"
 #include "outdir.h"
 
@@ -140,7 +146,7 @@ static void io_json_halo(FILE *f, const halo_stats *h) {
 
 /* Plain C (no PETSc calls): also used on the error path. Returns 0 or an errno. */
 static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
-  char path[PETSC_MAX_PATH_LEN + 16], end[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
+  char path[PETSC_MAX_PATH_LEN + 16], now[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
   size_t text_len = 0;
   snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
   snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
@@ -149,9 +155,13 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
     return errno ? errno : ENOMEM;
   fprintf(f, "{\n  \"dmhs_version\": ");
   io_json_string(f, DMHS_VERSION);
+  fprintf(f, ",\n  \"commit\": ");
+  io_json_string(f, dmhs_commit);
   fprintf(f, ",\n  \"scene\": ");
   io_json_string(f, s->scn ? s->scn->name : "");
-  fprintf(f, ",\n  \"ranks\": %d,\n  \"options\": ", (int)s->size);
+  fprintf(f, ",\n  \"ranks\": %d,\n  \"host\": ", (int)s->size);
+  io_json_string(f, s->io.host);
+  fprintf(f, ",\n  \"pid\": %ld,\n  \"options\": ", (long)getpid());
   io_json_string(f, s->io.options);
   fprintf(f, ",\n  \"restart_from\": ");
   if (s->io.restart_file[0])
@@ -173,11 +183,18 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
     fprintf(f, "null");
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io.start_time);
+  io_now_iso(now, sizeof(now));
   fprintf(f, ",\n  \"end\": ");
-  if (ended) {
-    io_now_iso(end, sizeof(end));
-    io_json_string(f, end);
-  } else
+  if (ended)
+    io_json_string(f, now);
+  else
+    fprintf(f, "null");
+  fprintf(f, ",\n  \"heartbeat\": ");
+  io_json_string(f, now);
+  fprintf(f, ",\n  \"heartbeat_interval\": ");
+  if (s->io.heartbeat_interval > 0)
+    fprintf(f, "%.17g", s->io.heartbeat_interval);
+  else
     fprintf(f, "null");
   fprintf(f, ",\n  \"status\": ");
   io_json_string(f, status);
@@ -206,6 +223,22 @@ static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
     PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
                s->output_dir, strerror(err));
   }
+  PetscFunctionReturn(0);
+}
+
+/* A heartbeat that cannot be written (a full disk) is said once; the run goes on, and a
+ * checkpoint or snapshot that cannot be written stops it. */
+PetscErrorCode io_heartbeat(sim *s) {
+  PetscFunctionBeginUser;
+  if (s->rank != 0)
+    PetscFunctionReturn(0);
+  const int err = io_write_run_json(s, "running", NULL, 0);
+  if (err && !s->io.heartbeat_failed)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR,
+                           "dmhs: warning: cannot update %s/run.json (its heartbeat): %s; the run "
+                           "goes on\n",
+                           s->output_dir, strerror(err)));
+  s->io.heartbeat_failed = err ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
@@ -243,6 +276,9 @@ PetscErrorCode io_setup(sim *s) {
   PetscCall(h5check_quiet());
   PetscCall(PetscOptionsGetAll(NULL, &io->options));
   io_now_iso(io->start_time, sizeof(io->start_time));
+  if (s->rank == 0 && gethostname(io->host, sizeof(io->host)) != 0)
+    PetscCall(PetscSNPrintf(io->host, sizeof(io->host), "unknown")); /* run.json says so */
+  io->host[sizeof(io->host) - 1] = 0;
   if (s->rank == 0)
     io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
   if (s->rank == 0) {
@@ -337,17 +373,15 @@ static PetscErrorCode io_checkpoint(sim *s) {
   PetscCall(io_output_path(s, "checkpoint.h5", path, sizeof(path)));
   PetscCall(checkpoint_write(s, path));
   s->io.last_checkpoint_step = s->step;
+  PetscCall(io_heartbeat(s)); /* run.json names the checkpoint */
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode io_after_step(sim *s, PetscBool *stop) {
+PetscErrorCode io_after_step(sim *s, int any, PetscBool *stop) {
   io_state *io = &s->io;
-  int mine = stop_signal_pending(), any;
   PetscBool due = PETSC_FALSE;
   PetscFunctionBeginUser;
   *stop = PETSC_FALSE;
-  /* every rank must take the same branch: the checkpoint is collective */
-  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, s->comm));
   if (io->checkpoint_interval > 0 && s->t >= io->next_checkpoint_t - 0.5 * s->dt) {
     due = PETSC_TRUE;
     while (io->next_checkpoint_t <= s->t + 0.5 * s->dt)

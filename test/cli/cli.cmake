@@ -145,6 +145,21 @@ set_tests_properties(cli_colon_study_plot PROPERTIES LABELS cli TIMEOUT 60)
 add_test(NAME cli_sph_grid_selftest COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/sph_grid_selftest.py
   ${PROJECT_SOURCE_DIR}/scripts/post)
 set_tests_properties(cli_sph_grid_selftest PROPERTIES LABELS cli TIMEOUT 60)
+# progress lines at the simulated and the wall-clock interval, the projection after 100 steps
+# (the step count of the automatic dt as taken), -quiet (test/cli/progress.sh)
+add_test(NAME cli_progress_lines COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/progress.sh ${DMHS_EXE} ${DMHS_INPUT}
+  ${DMHS_CLI_OUT}/progress)
+set_tests_properties(cli_progress_lines PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli_help_progress_wall_interval COMMAND ${DMHS_EXPECT_OUTPUT}
+  "-progress_wall_interval <600> +Wall-clock time .*\\[s\\]" -- ${DMHS_EXE} -help)
+set_tests_properties(cli_help_progress_wall_interval PROPERTIES LABELS cli TIMEOUT 60)
+dmhs_cli_fail(cli_bad_progress_wall_interval "-progress_wall_interval must be >= 0 s \\(got -1"
+  ${QUICK} -progress_wall_interval -1 -output_dir ${DMHS_CLI_OUT}/progress-bad)
+# run.json's commit, host, pid and heartbeat; scripts/run_state.sh tells running, stalled and died
+# apart, and scripts/vein_study.sh leaves a running run alone (test/cli/run_state.sh)
+add_test(NAME cli_run_state COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/run_state.sh ${PROJECT_SOURCE_DIR} ${DMHS_EXE}
+  ${DMHS_PYTHON} ${DMHS_CLI_OUT}/run-state)
+set_tests_properties(cli_run_state PROPERTIES LABELS cli TIMEOUT 120)
 # the last step may pass t_end by dt/2: the progress line then says ETA 0.0 s, never -0.0 s
 add_test(NAME cli_eta_not_negative COMMAND ${DMHS_EXPECT_OUTPUT} "step +337 .* ETA +0.0 s" --reject "ETA +-" --
   ${DMHS_EXE} -options_file ${DMHS_INPUT}/poiseuille-quick.opts -dt 3e-5

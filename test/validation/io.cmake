@@ -2,7 +2,7 @@
 # seconds on one rank. Output under <build>/test-output/io/<test>.
 set(DMHS_IO_OUT ${CMAKE_BINARY_DIR}/test-output/io)
 set(DMHS_IO_DIR ${CMAKE_CURRENT_LIST_DIR}/../io)
-foreach(t restart consistency signal corrupt restart_options outdir)
+foreach(t restart consistency signal corrupt restart_options outdir console_log)
   add_test(NAME io_${t} COMMAND bash ${DMHS_IO_DIR}/${t}.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_IO_OUT}/${t})
   set_tests_properties(io_${t} PROPERTIES LABELS "io;validation" TIMEOUT 180)
 endforeach()
@@ -27,6 +27,11 @@ set_tests_properties(io_bonds PROPERTIES LABELS "io;mpi" TIMEOUT 120)
 add_test(NAME io_restart_ranks COMMAND bash ${DMHS_IO_DIR}/restart_ranks.sh ${DMHS_EXE} ${DMHS_PYTHON} ${DMHS_MPIRUN}
   -- ${DMHS_IO_OUT}/restart_ranks)
 set_tests_properties(io_restart_ranks PROPERTIES LABELS "io;mpi" TIMEOUT 120)
+
+# The progress lines (one after every step, rank 0's clock deciding) change no output, on 2 ranks.
+add_test(NAME io_progress_bitwise COMMAND bash ${DMHS_IO_DIR}/progress_bitwise.sh ${DMHS_EXE} ${DMHS_PYTHON}
+  ${DMHS_MPIRUN} -- ${DMHS_IO_OUT}/progress_bitwise)
+set_tests_properties(io_progress_bitwise PROPERTIES LABELS "io;mpi" PROCESSORS 2 TIMEOUT 180)
 
 # Fault injection (label faults): a full disk (a small tmpfs; skipped without root/mount), and
 # test/io/faults.py: SIGTERM / SIGKILL while a checkpoint or a snapshot is being written, a
