@@ -14,7 +14,8 @@
 PetscInt tracking_pocket(double x, PetscInt n_pockets, double b, double x_left);
 /* Over all ranks, for fluid or parked particles whose tracer field is `tracer` (type ignored):
  * counts[0 .. n_pockets] per pocket (the last is the overflow), the total n
- * and the mean x. Collective. */
+ * and the mean x, where a particle of the overflow counts at x_left + n_pockets b
+ * (the parking lot's places are not positions along the colon). Collective. */
 PetscErrorCode tracking_count(sim *s, PetscInt tracer, PetscInt n_pockets, double b, double x_left,
                               PetscInt64 counts[], PetscInt64 *n, double *mean_x);
 /* Mean over all ranks of (x - x0)[d] of owned particles for which sel(i) is

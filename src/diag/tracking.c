@@ -25,13 +25,16 @@ PetscErrorCode tracking_count(sim *s, PetscInt tracer, PetscInt n_pockets, doubl
   const particles *ps = &s->ps;
   PetscInt64 *buf;
   PetscFunctionBeginUser;
+  /* a particle past the last pocket (over the weir, or parked in the lot at a place
+   * set by its gid) is in pocket N+1, counted at its start x_left + (N+1) b */
+  const double x_out = x_left + (double)n_pockets * b;
   PetscCall(PetscCalloc1(n_pockets + 3, &buf));
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->tracer[i] != tracer)
       continue;
     buf[tracking_pocket(ps->x[i][0], n_pockets, b, x_left)]++;
     buf[n_pockets + 1]++;
-    buf[n_pockets + 2] += tracking_fixed(ps->x[i][0]);
+    buf[n_pockets + 2] += tracking_fixed(PetscMin(ps->x[i][0], x_out));
   }
   PetscCallMPI(
       MPI_Allreduce(MPI_IN_PLACE, buf, (PetscMPIInt)(n_pockets + 3), MPIU_INT64, MPI_SUM, s->comm));
