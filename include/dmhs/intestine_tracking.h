@@ -10,9 +10,12 @@
  *   layers, and below its bottom layer), lift_0 .. lift_N
  *   (mean y displacement of the middle third of each segment [m]),
  *   s_0 .. s_N (the schedule's value per pocket).
- * At the end: u_F, V_w, alpha after one period, u_P, u_S, Re, Ga, Fr, Lambda
- * (doc/theory.md, "Peristalsis and tracking"), in the report and
- * <output_dir>/intestine-summary.csv (key,value). */
+ * At the end, from the rows since the wave's start (intestine_measures.h): u_F
+ * (the line over the run's whole waves, or the initial slope where it does not
+ * fit), V_w, alpha after one period and at the last whole wave's end, u_P,
+ * u_S, Re, Re_P, Ga, Fr, Lambda (doc/theory.md, "Peristalsis and tracking"),
+ * in the report and <output_dir>/intestine-summary.csv (key,value,note: n/a
+ * with its reason where a value is undefined). */
 #ifndef DMHS_INTESTINE_TRACKING_H
 #define DMHS_INTESTINE_TRACKING_H
 #include "dmhs/sim.h"
@@ -29,6 +32,8 @@ typedef struct intestine_layout {
   PetscInt64 n_fluid;             /* fluid gids 0 .. n_fluid - 1 */
   membrane_layout mem;            /* the liquid must stay above its top layer */
   module *peri, *body;            /* the wave's schedule, gravity */
+  double uf_r2_min;               /* u_F: the whole-run line fits when its R^2 >= this */
+  PetscInt uf_initial_waves;      /* u_F's initial slope: over the first this many waves */
 } intestine_layout;
 
 PetscErrorCode intestine_tracking_register(sim *s, const intestine_layout *lay);

@@ -24,6 +24,8 @@ double peristalsis_amplitude(const module *m, double t, PetscInt k);
 /* Resolved t_w [s], period T_w [s] (rows x t_w), H, rows of the schedule. */
 PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscInt *H,
                                PetscInt *rows, double *delay);
+/* -peristalsis_waves: the waves before the force stops (0: until the run's end). */
+PetscInt peristalsis_waves(const module *m);
 /* The generated (published) schedule: pocket k of n_pockets in sub-period r of a
  * period of 2N+5 sub-periods: -1 if r = 2k-1, +1 if r in 2k+1 .. 2k+H (mod 2N+5). */
 int peristalsis_spec_value(PetscInt n_pockets, PetscInt H, PetscInt r, PetscInt k);

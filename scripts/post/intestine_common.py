@@ -1,9 +1,13 @@
 """Shared by the colon's plot scripts (plot_intestine.py, plot_intestine_study.py,
-plot_intestine_waves.py): the strict readers of a run's intestine.csv and
-intestine-summary.csv, and the rows that end each completed wave."""
+plot_intestine_waves.py, plot_intestine_snapshot.py): the strict readers of a
+run's intestine.csv (its rows and its '# intestine:' line) and
+intestine-summary.csv, and the rows that end each completed wave. The
+measures themselves (u_F, alpha, u_P, u_S, Re) are the solver's, read from the
+summary: they are defined once, in src/diag/intestine_measures.c."""
 import csv
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -14,20 +18,26 @@ def die(prog, msg):
     sys.exit(1)
 
 
-def read_summary(path, prog, need=(), finite=()):
-    """intestine-summary.csv as {key: float}, n/a -> NaN. Exits naming the file and the line when
-    the file is missing or malformed, a key of `need` is absent, or a key of `finite` is n/a."""
+def read_summary(path, prog, need=(), finite=(), notes=None):
+    """intestine-summary.csv (key,value[,note]) as {key: float}, n/a -> NaN; with a dict `notes`,
+    each key's note (why a value is n/a, or how it was chosen) goes there. Exits naming the file
+    and the line when the file is missing or malformed, a key of `need` is absent, or a key of
+    `finite` is n/a (with its reason)."""
     if not os.path.isfile(path):
         die(prog, f"{path}: no such file (the run did not finish?)")
     with open(path, newline="") as f:
         rows = [r for r in csv.reader(f) if r]
-    if len(rows) < 2 or [c.strip() for c in rows[0]] != ["key", "value"]:
-        die(prog, f"{path}: not a key,value table")
-    out = {}
+    header = [c.strip() for c in rows[0]] if rows else []
+    if len(rows) < 2 or header not in (["key", "value"], ["key", "value", "note"]):
+        die(prog, f"{path}: not a key,value[,note] table")
+    out, why = {}, {}
     for n, r in enumerate(rows[1:], start=2):
-        if len(r) != 2:
-            die(prog, f"{path}: line {n} has {len(r)} fields, not key,value")
+        if len(r) not in (2, 3):
+            die(prog, f"{path}: line {n} has {len(r)} fields, not key,value[,note]")
         k, v = r[0].strip(), r[1].strip()
+        why[k] = r[2].strip() if len(r) == 3 else ""
+        if notes is not None:
+            notes[k] = why[k]
         if v == "n/a":
             out[k] = math.nan
             continue
@@ -43,8 +53,32 @@ def read_summary(path, prog, need=(), finite=()):
         die(prog, f"{path}: no {', '.join(missing)}")
     undefined = [k for k in finite if math.isnan(out[k])]
     if undefined:
-        die(prog, f"{path}: {', '.join(undefined)} n/a")
+        die(prog, f"{path}: {', '.join(k + (f' n/a ({why[k]})' if why[k] else ' n/a') for k in undefined)}")
     return out
+
+
+def read_comment(path, prog):
+    """The '# intestine: ...' line of intestine.csv as {name: float} (pockets, b, dx, level,
+    amplitude, t_w, T_w, t_d, fluid); exits naming the file when it is missing or has none."""
+    if not os.path.isfile(path):
+        die(prog, f"{path}: no such file")
+    with open(path) as f:
+        line = f.readline()
+    if not line.startswith("# intestine:"):
+        die(prog, f"{path}: no '# intestine:' line first")
+    info = {}
+    m = re.match(r"# intestine:\s*(\d+) pockets", line)
+    if m:
+        info["pockets"] = float(m.group(1))
+    for name, value in re.findall(r"(?:,|:)\s*([A-Za-z_]+)\s+([-+0-9.eE]+)", line):
+        try:
+            info[name] = float(value)
+        except ValueError:
+            pass
+    missing = [k for k in ("pockets", "b", "t_w", "T_w") if k not in info]
+    if missing:
+        die(prog, f"{path}: the '# intestine:' line has no {', '.join(missing)}")
+    return info
 
 
 def read_series(path, prog):

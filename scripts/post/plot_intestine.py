@@ -2,9 +2,13 @@
 """Plots and tables of an intestine (colon) run, from <outdir>/intestine.csv
 and <outdir>/intestine-summary.csv (written by dmhs at the end of the run):
 
-  <outdir>/intestine.png          x_F(t) with the least-squares u_F and the
-                                  initial slope u_F0; alpha(t); the segments'
-                                  lifts; N/N0 per pocket after waves; the
+  <outdir>/intestine.png          x_F(t) with the least-squares line over the
+                                  whole waves, the initial slope and the
+                                  front's first advance (u_F is the one the
+                                  summary chose); alpha(t) with alpha after one
+                                  period and at the last whole wave's end; the
+                                  segments' lifts as a map over time and
+                                  pocket; N/N0 per pocket after waves; the
                                   liquid's density deviation and Mach number
   <outdir>/intestine-pockets.csv  tracked (white, and red if tracked) count per
                                   pocket after every completed wave, N/N0
@@ -14,6 +18,9 @@ Usage: plot_intestine.py OUTDIR [--waves 5,7]
 comparison; waves the run did not complete are left out, and the last
 completed wave, or the end of the run, is drawn when none of them is).
 Exits non-zero, naming the file, when an input is missing, empty or not finite.
+The measures (u_F, alpha, u_P, u_S, Re) are read from the summary as the
+solver defines them (doc/theory.md, "Peristalsis and tracking"); an n/a value
+is shown as n/a with the summary's reason.
 """
 import argparse
 import math
@@ -35,8 +42,18 @@ def die(msg):
     ic.die(PROG, msg)
 
 
-def read_summary(path):
-    return ic.read_summary(path, PROG, finite=("u_F", "V_w", "T_w", "b", "nu"))
+def read_summary(path, notes):
+    return ic.read_summary(path, PROG, need=("u_F", "alpha_T", "u_P", "u_S", "Re"),
+                           finite=("V_w", "T_w", "b", "nu"), notes=notes)
+
+
+def finite(s, k):
+    return math.isfinite(s.get(k, float("nan")))
+
+
+def short(why):
+    """A reason's head ('no whole wave: the rows end at ...' -> 'no whole wave')."""
+    return why.split(":")[0]
 
 
 def main():
@@ -46,7 +63,8 @@ def main():
     a = ap.parse_args()
     series = os.path.join(a.outdir, "intestine.csv")
     d, names = ic.read_series(series, PROG)
-    s = read_summary(os.path.join(a.outdir, "intestine-summary.csv"))
+    notes = {}
+    s = read_summary(os.path.join(a.outdir, "intestine-summary.csv"), notes)
     t = d["t"]
     n_pockets = sum(1 for n in names if n.startswith("lift_"))
     Tw = s["T_w"]
@@ -72,14 +90,20 @@ def main():
     fig, ax = plt.subplots(2, 3, figsize=(15, 8.5))
     # x_F
     x = ax[0, 0]
-    x.plot(t, d["x_F"] * 100, "k-", lw=1.2, label="x_F (mean x of the white set)")
-    first = (t >= t0) & (t <= t0 + Tw)
-    tw = t[first]
-    if len(tw) > 1:  # the fitted line passes through the rows' mean point
-        tm, xm = tw.mean(), d["x_F"][first].mean()
-        x.plot(tw, (xm + s["u_F"] * (tw - tm)) * 100, "r--",
-               label=f"least squares, first wave: u_F = {s['u_F'] * 100:.3g} cm/s")
-    if math.isfinite(s.get("u_F_initial", float("nan"))):
+    x.plot(t, d["x_F"] * 100, "k-", lw=1.0, label="x_F (mean x of the white set)")
+    t_d = s.get("t_d", t0)
+    chosen = "initial" if s.get("u_F_from_initial", 0) == 1 else "line"
+    for key, style, what in (("line", "r--", "whole waves"), ("initial", "m-.", "initial slope")):
+        k, t1 = f"u_F_{key}", s.get(f"u_F_{key}_t1", float("nan"))
+        if not (finite(s, k) and finite(s, f"{k}_x0") and math.isfinite(t1)):
+            continue
+        if key == "initial" and t1 >= s.get("u_F_line_t1", float("nan")) - 1e-9:
+            continue  # the same window as the line
+        tt = np.array([t_d, t1])
+        x.plot(tt, (s[f"{k}_x0"] + s[k] * (tt - t_d)) * 100, style, lw=1.6,
+               label=f"least squares, {what}: {s[k] * 100:.3g} cm/s, R² {s[f'{k}_r2']:.3g}"
+                     + (" = u_F" if finite(s, "u_F") and key == chosen else ""))
+    if finite(s, "u_F_squeeze"):
         sq = np.where(d["s_0"] > 0)[0]
         # the first contiguous squeeze only, the rows the solver's slope was fitted to
         # (pocket 0 squeezes again in every later wave)
@@ -87,32 +111,42 @@ def main():
         sq = sq[:gaps[0] + 1] if len(gaps) else sq
         if len(sq) > 1:
             ts, xs = t[sq[0]:sq[-1] + 1], d["x_F"][sq[0]:sq[-1] + 1]
-            x.plot(ts, (xs.mean() + s["u_F_initial"] * (ts - ts.mean())) * 100, "b:", lw=2,
-                   label=f"initial slope (pocket 0 squeezes): {s['u_F_initial'] * 100:.3g} cm/s")
+            x.plot(ts, (xs.mean() + s["u_F_squeeze"] * (ts - ts.mean())) * 100, "b:", lw=2,
+                   label=f"first advance (pocket 0 squeezes): {s['u_F_squeeze'] * 100:.3g} cm/s")
     x.set_xlabel("t [s]")
     x.set_ylabel("x_F [cm]")
-    x.set_title("Front penetration (Fig. 3.5)")
-    x.legend(fontsize=8)
+    x.set_title("Front penetration (Fig. 3.5)" + ("" if finite(s, "u_F") else
+                                                  f"\nu_F n/a: {short(notes.get('u_F', ''))}"), fontsize=10)
+    x.legend(fontsize=7)
     # alpha
     x = ax[0, 1]
-    x.plot(t, d["alpha"], "k-")
-    if math.isfinite(s.get("alpha_T", float("nan"))):
-        x.axvline(t0 + Tw, color="grey", ls=":")
-        x.plot([t0 + Tw], [s["alpha_T"]], "ro",
-               label=f"alpha after one period = {s['alpha_T']:.3g}\nu_P = {s['u_P'] * 100:.3g} cm/s, "
-                     f"u_S = {s['u_S'] * 100:.3g} cm/s")
+    x.plot(t, d["alpha"], "k-", lw=1.0)
+    if finite(s, "alpha_T"):
+        x.axvline(s["alpha_T_t"], color="grey", ls=":")
+        pump = (f"u_P = {s['u_P'] * 100:.3g} cm/s" if finite(s, "u_P") else f"u_P n/a ({notes.get('u_P', '')})")
+        x.plot([s["alpha_T_t"]], [s["alpha_T"]], "ro",
+               label=f"alpha after one period = {s['alpha_T']:.3g}\n{pump}, u_S = {s['u_S'] * 100:.3g} cm/s")
+    if finite(s, "alpha_end") and s.get("waves", 0) > 1:
+        x.plot([s["alpha_end_t"]], [s["alpha_end"]], "bs",
+               label=f"alpha at the end of wave {int(s['waves'])} = {s['alpha_end']:.3g}")
+    if x.get_legend_handles_labels()[0]:
         x.legend(fontsize=8)
     x.set_xlabel("t [s]")
     x.set_ylabel("alpha [1]")
-    x.set_title("Fraction of the white set out of pocket 0")
-    # lifts
+    x.set_title("Fraction of the white set out of pocket 0" + ("" if finite(s, "alpha_T") else
+                f"\nalpha after one period n/a: {short(notes.get('alpha_T', ''))}"), fontsize=10)
+    # lifts: a map over time and pocket (one trace per pocket would overlay into a block)
     x = ax[0, 2]
-    for k in range(n_pockets):
-        x.plot(t, d[f"lift_{k}"] * 1000, lw=1, label=f"pocket {k}")
+    lift = np.stack([d[f"lift_{k}"] for k in range(n_pockets)], axis=0) * 1000
+    vmax = max(float(np.abs(lift).max()), 1e-6)
+    edges_t = np.concatenate([[t[0]], 0.5 * (t[1:] + t[:-1]), [t[-1]]])
+    im = x.pcolormesh(edges_t, np.arange(n_pockets + 1) - 0.5, lift, cmap="RdBu_r", vmin=-vmax, vmax=vmax,
+                      shading="flat", rasterized=True)
+    fig.colorbar(im, ax=x, label="segment lift [mm]")
+    x.set_yticks(range(n_pockets))
     x.set_xlabel("t [s]")
-    x.set_ylabel("segment lift [mm]")
-    x.set_title("Membrane lift (middle third of each segment)")
-    x.legend(fontsize=7, ncol=2)
+    x.set_ylabel("pocket")
+    x.set_title("Membrane lift (middle third of each segment)", fontsize=10)
     # N/N0 per pocket
     x = ax[1, 0]
     want = [int(w) for w in a.waves.split(",") if w.strip()]
@@ -144,12 +178,21 @@ def main():
     # numbers
     x = ax[1, 2]
     x.axis("off")
-    lines = [f"{k} = {s[k]:.4g}" if math.isfinite(s[k]) else f"{k}: n/a"
-             for k in ("V_w", "u_F", "u_F_initial", "alpha_T", "u_P", "u_S", "Re", "Ga", "Fr", "Lambda", "h")
-             if k in s]
-    units = {"V_w": " m/s", "u_F": " m/s", "u_F_initial": " m/s", "u_P": " m/s", "u_S": " m/s", "h": " m"}
-    lines = [l + (units.get(l.split()[0], "") if "n/a" not in l else "") for l in lines]
-    x.text(0.02, 0.98, "\n".join(lines), va="top", family="monospace", fontsize=10)
+    units = {"V_w": " m/s", "u_F": " m/s", "u_F_line": " m/s", "u_F_initial": " m/s", "u_F_first_wave": " m/s",
+             "u_F_squeeze": " m/s", "u_P": " m/s", "u_S": " m/s", "h": " m"}
+    lines = []
+    for k in ("V_w", "waves", "u_F", "u_F_line", "u_F_line_r2", "u_F_initial", "u_F_initial_r2", "u_F_first_wave",
+              "u_F_squeeze", "alpha_T", "alpha_end", "u_P", "u_S", "Re", "Re_P", "Ga", "Fr", "Lambda", "h"):
+        if k not in s:
+            continue
+        if math.isfinite(s[k]):
+            lines.append(f"{k} = {s[k]:.4g}{units.get(k, '')}")
+        else:  # the reason, cut to the panel's width
+            why = notes.get(k, "")
+            lines.append(f"{k}: n/a" + (f" ({why[:44]}{'...' if len(why) > 44 else ''})" if why else ""))
+    if finite(s, "u_F"):
+        lines.append(f"u_F: {notes.get('u_F', '')[:60]}")
+    x.text(0.0, 1.0, "\n".join(lines), va="top", family="monospace", fontsize=7.5)
     fig.suptitle(f"Intestine: {n_pockets} pockets, b = {s['b'] * 100:g} cm, level {s.get('level', 0) * 100:.3g} cm, "
                  f"nu = {s['nu']:.3g} m^2/s, T_w = {Tw:.3g} s; {n_done} wave(s) completed")
     png = os.path.join(a.outdir, "intestine.png")

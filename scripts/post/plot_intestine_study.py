@@ -8,7 +8,11 @@ writes
   OUTDIR/colon-study.csv  one row per usable run: run, L [m], nu [m^2/s],
                           V_w, u_F, u_P, u_S [m/s], alpha_T [1],
                           Re = b u_F/nu, Re_P = b u_P/nu, Ga, Fr, Lambda,
-                          rho_dev_max, mach_max [1], through_max [particles]
+                          rho_dev_max, mach_max [1], through_max [particles],
+                          then u_F_from_initial (1: u_F is the initial
+                          slope), u_F_line_r2 (the whole-run line's R^2),
+                          u_F_first_wave [m/s], alpha_end [1] (at the last
+                          whole wave's end), waves
                           ("n/a" where the run's summary has n/a)
   OUTDIR/colon-study.png  (a) Re against Re_P, log-log, with the line
                           Re = Re_P (u_F ~ u_P for Re > 1, u_F < u_P for
@@ -18,10 +22,14 @@ OUTDIR defaults to the common parent directory of the DIRs (for
 output/colon-study/L*_nu*_Vw* that is output/colon-study); it is never the
 repository's doc/ by default (give --out for that).
 
-A run whose alpha_T, u_P or u_F is n/a (it ended before one wave period, or
-no front was measured) is skipped with a warning naming it. A missing or
-malformed summary is an error naming the file (exit status 1), and so is a
-set of directories none of which is usable.
+Every measure is the solver's, read from the summary (u_F, Re and Re_P as
+doc/theory.md defines them); Re and Re_P are n/a for a front or a pouring
+estimate that did not advance, and such a run is left out of (a) only. A run
+whose alpha_T, u_P or u_F is n/a (it ended before one wave period, or no front
+was measured) is skipped with a warning naming it and the summary's reason. A
+missing or malformed summary, or one without these keys (written by an older
+dmhs), is an error naming the file (exit status 1), and so is a set of
+directories none of which is usable.
 """
 import argparse
 import csv
@@ -39,12 +47,14 @@ import intestine_common as ic  # noqa: E402
 
 PROG = "plot_intestine_study.py"
 # keys every summary must have; those in FINITE must also be numbers (not n/a)
-NEED = ("b", "level", "nu", "T_w", "V_w", "u_F", "alpha_T", "u_P", "u_S", "Ga", "Fr", "Lambda",
-        "rho_dev_max", "mach_max", "through_max")
+NEED = ("b", "level", "nu", "T_w", "V_w", "u_F", "alpha_T", "u_P", "u_S", "Re", "Re_P", "Ga", "Fr", "Lambda",
+        "rho_dev_max", "mach_max", "through_max", "u_F_from_initial", "u_F_line_r2", "u_F_first_wave",
+        "alpha_end", "waves")
 FINITE = ("b", "level", "nu", "V_w")
 USABLE = ("alpha_T", "u_P", "u_F")  # n/a here: the run is skipped
 COLUMNS = ("run", "L", "nu", "V_w", "u_F", "u_P", "u_S", "alpha_T", "Re", "Re_P", "Ga", "Fr", "Lambda",
-           "rho_dev_max", "mach_max", "through_max")
+           "rho_dev_max", "mach_max", "through_max", "u_F_from_initial", "u_F_line_r2", "u_F_first_wave",
+           "alpha_end", "waves")
 
 
 def die(msg):
@@ -56,9 +66,10 @@ def warn(msg):
     print(f"{PROG}: warning: {msg}", file=sys.stderr)
 
 
-def read_summary(path):
-    """key -> float (n/a -> NaN); dies naming the file when missing or malformed."""
-    out = ic.read_summary(path, PROG, NEED, FINITE)
+def read_summary(path, notes):
+    """key -> float (n/a -> NaN), the notes into `notes`; dies naming the file when missing or
+    malformed."""
+    out = ic.read_summary(path, PROG, NEED, FINITE, notes=notes)
     if out["nu"] <= 0 or out["b"] <= 0:
         die(f"{path}: nu and b must be > 0")
     return out
@@ -88,15 +99,15 @@ def main():
     runs = []
     for d in a.dirs:
         path = os.path.join(d, "intestine-summary.csv")
-        s = read_summary(path)
+        notes = {}
+        s = read_summary(path, notes)
         bad = [k for k in USABLE if math.isnan(s[k])]
         if bad:
-            warn(f"{path}: {', '.join(bad)} n/a (the run ended before one wave period?): skipped")
+            warn(f"{path}: " + ", ".join(f"{k} n/a ({notes[k]})" if notes.get(k) else f"{k} n/a" for k in bad)
+                 + ": skipped")
             continue
         s["run"] = d.rstrip("/")
         s["L"] = s["level"]
-        s["Re"] = s["b"] * s["u_F"] / s["nu"]
-        s["Re_P"] = s["b"] * s["u_P"] / s["nu"]
         runs.append(s)
     if not runs:
         die(f"none of the {len(a.dirs)} run(s) is usable (every one skipped)")
@@ -118,7 +129,7 @@ def main():
     fig, ax = plt.subplots(1, 3, figsize=(16, 5))
     # (a) Re against Re_P: the points with both > 0 on the log-log axes
     x = ax[0]
-    pos = [r for r in runs if r["Re"] > 0 and r["Re_P"] > 0]
+    pos = [r for r in runs if math.isfinite(r["Re"]) and math.isfinite(r["Re_P"])]
     for L in levels:
         sel = [r for r in pos if r["L"] == L]
         if sel:
@@ -137,7 +148,7 @@ def main():
     n_off = len(runs) - len(pos)
     x.set_xlabel("Re_P = b u_P / nu [1]")
     x.set_ylabel("Re = b u_F / nu [1]")
-    x.set_title("Re against Re_P (Fig. 3.9)" + (f"; {n_off} run(s) with Re <= 0 not drawn" if n_off else ""),
+    x.set_title("Re against Re_P (Fig. 3.9)" + (f"; {n_off} run(s) with Re or Re_P n/a not drawn" if n_off else ""),
                 fontsize=10)
     x.grid(True, which="both", alpha=0.3)
     # (b) u_F against u_P
@@ -152,7 +163,7 @@ def main():
     hi = hi if hi > lo else lo + 1
     x.plot([lo, hi], [lo, hi], "k--", lw=1, label="u_F = u_P")
     x.set_xlabel("u_P = alpha/(1 - alpha) V_w/(N+1) [cm/s]")
-    x.set_ylabel("u_F (least squares, first wave) [cm/s]")
+    x.set_ylabel("u_F (least squares over the whole waves, or initial slope) [cm/s]", fontsize=8)
     x.set_title("Front velocity against the pumping velocity", fontsize=10)
     x.legend(fontsize=8)
     x.grid(True, alpha=0.3)

@@ -166,6 +166,8 @@ static const char *const options_run_control[] = {"-t_end",
                                                   "-debug_halo",
                                                   "-partition_imbalance",
                                                   "-preflight",
+                                                  "-intestine_uf_r2_min",
+                                                  "-intestine_uf_initial_waves",
                                                   "-dmhs_traceback"};
 
 static int options_is_run_control(const char *name) {

@@ -1,5 +1,6 @@
 /* The diagnostic "intestine": counts per pocket, the front, the liquid's
- * bounds and the membrane's tightness (intestine_tracking.h). */
+ * bounds and the membrane's tightness (intestine_tracking.h); at the end the
+ * measures of intestine_measures.h from the rows it kept (t, x_F, alpha). */
 #include <math.h>
 #include <errno.h>
 #include <string.h>
@@ -7,6 +8,7 @@
 #include "dmhs/body_force.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"
+#include "dmhs/intestine_measures.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
 #include "dmhs/liquid_state.h"
@@ -14,10 +16,9 @@
 typedef struct {
   intestine_layout lay;
   PetscInt64 n_white0, n_red0;
-  /* history of x_F for the slope (replicated) */
-  double *hist_t, *hist_x;
+  /* the rows from the wave's start on, for the measures at the end (replicated) */
+  double *hist_t, *hist_x, *hist_a; /* t, x_F, alpha */
   PetscInt n_hist, cap_hist;
-  double alpha_T;                     /* alpha after one period (NAN until reached) */
   double lift_max;                    /* largest segment lift seen [m] */
   double rho_dev_max, mach_max;       /* over the output rows so far */
   PetscInt64 inside_max, through_max; /* most liquid particles in / through the membrane in a row */
@@ -54,7 +55,8 @@ static PetscErrorCode intestine_fluid_counts(intestine_tracking *c, sim *s, Pets
 }
 
 /* intestine.csv and its header (csv.h: a restart keeps the rows up to the checkpoint) */
-static PetscErrorCode intestine_open_csv(intestine_tracking *c, sim *s, double tw, double Tw) {
+static PetscErrorCode intestine_open_csv(intestine_tracking *c, sim *s, double tw, double Tw,
+                                         double delay) {
   const PetscInt np = c->lay.n_pockets;
   const size_t len = 512 + 32 * (size_t)(4 * np + 8);
   size_t at = 0;
@@ -62,10 +64,10 @@ static PetscErrorCode intestine_open_csv(intestine_tracking *c, sim *s, double t
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(len, &h));
 #define INTESTINE_HEADER(...) at += (size_t)snprintf(h + at, at < len ? len - at : 0, __VA_ARGS__)
-  INTESTINE_HEADER("# intestine: %" PetscInt_FMT
-                   " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
-                   "t_w %g s, T_w %g s, fluid %" PetscInt64_FMT "\n",
-                   np, c->lay.b, c->lay.dx, c->lay.level, c->lay.amplitude, tw, Tw, c->lay.n_fluid);
+  INTESTINE_HEADER(
+      "# intestine: %" PetscInt_FMT " pockets, b %g m, dx %g m, level %g m, amplitude %g m, "
+      "t_w %g s, T_w %g s, t_d %g s, fluid %" PetscInt64_FMT "\n",
+      np, c->lay.b, c->lay.dx, c->lay.level, c->lay.amplitude, tw, Tw, delay, c->lay.n_fluid);
   INTESTINE_HEADER("t,sub,x_F");
   for (PetscInt k = 0; k <= np; k++)
     INTESTINE_HEADER(",white_%" PetscInt_FMT, k);
@@ -120,8 +122,10 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
   if (s->step == 0) {
     c->n_white0 = nw;
     c->n_red0 = c->lay.red ? nr : 0;
+    PetscCheck(nw > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "intestine: no liquid in pocket 0 to track (the white set is empty)");
   }
-  const double alpha = c->n_white0 > 0 ? 1.0 - (double)cw[0] / (double)c->n_white0 : 0.0;
+  const double alpha = 1.0 - (double)cw[0] / (double)c->n_white0;
   double *lift;
   PetscCall(PetscMalloc1(np, &lift));
   for (PetscInt k = 0; k < np; k++) {
@@ -131,21 +135,21 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
     c->lift_max = PetscMax(c->lift_max, lift[k]);
   }
   const PetscInt sub = peristalsis_subperiod(c->lay.peri, s->t);
-  /* x_F history of the squeezing phase for u_F: the first wave */
-  if (s->t >= delay - 0.5 * s->dt && s->t <= delay + Tw + 0.5 * s->dt) {
+  /* the rows from the wave's start on (t, x_F, alpha), for the measures at the end */
+  if (s->t >= delay - 0.5 * s->dt) {
     if (c->n_hist == c->cap_hist) {
       c->cap_hist = 2 * c->cap_hist + 64;
       PetscCall(PetscRealloc(sizeof(double) * c->cap_hist, &c->hist_t));
       PetscCall(PetscRealloc(sizeof(double) * c->cap_hist, &c->hist_x));
+      PetscCall(PetscRealloc(sizeof(double) * c->cap_hist, &c->hist_a));
     }
     c->hist_t[c->n_hist] = s->t;
-    c->hist_x[c->n_hist++] = xw;
+    c->hist_x[c->n_hist] = xw;
+    c->hist_a[c->n_hist++] = alpha;
   }
-  if (isnan(c->alpha_T) && s->t >= delay + Tw - 0.5 * s->dt)
-    c->alpha_T = alpha;
   if (s->rank == 0) { /* mpi: rank 0 writes */
     if (!c->csv)
-      PetscCall(intestine_open_csv(c, s, tw, Tw));
+      PetscCall(intestine_open_csv(c, s, tw, Tw, delay));
     const size_t len = 128 + 32 * (size_t)(4 * np + 8);
     size_t at = 0;
     char *row;
@@ -177,22 +181,35 @@ static PetscErrorCode intestine_tracking_sample(diagnostic *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-/* <output_dir>/intestine-summary.csv (key,value; "n/a" for an undefined
- * value, e.g. alpha when the run ends before one period), written to a
- * temporary name and renamed. */
-static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const double *values,
-                                              PetscInt n) {
+/* One row of <output_dir>/intestine-summary.csv: key, value (NAN: "n/a") and a
+ * note (why a value is n/a, or how it was chosen; one CSV cell: written with a
+ * comma as ';', a quote as ' and a newline as a blank). */
+typedef struct {
+  const char *key;
+  double value;
+  const char *note;
+} summary_row;
+
+/* <output_dir>/intestine-summary.csv (key,value,note), written to a temporary
+ * name and renamed. */
+static PetscErrorCode intestine_write_summary(sim *s, const summary_row *rows, PetscInt n) {
   char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
   PetscFunctionBeginUser;
   PetscCall(io_output_path(s, "intestine-summary.csv", path, sizeof(path)));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   FILE *f = fopen(tmp, "w");
   PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
-  int ok = fprintf(f, "key,value\n") > 0;
-  for (PetscInt i = 0; i < n; i++)
-    ok = (isfinite(values[i]) ? fprintf(f, "%s,%.8g\n", keys[i], values[i])
-                              : fprintf(f, "%s,n/a\n", keys[i])) > 0 &&
+  int ok = fprintf(f, "key,value,note\n") > 0;
+  for (PetscInt i = 0; i < n; i++) {
+    char note[256];
+    size_t k = 0;
+    for (const char *c = rows[i].note; *c && k + 1 < sizeof(note); c++, k++)
+      note[k] = *c == ',' ? ';' : *c == '"' ? '\'' : *c == '\n' ? ' ' : *c;
+    note[k] = 0;
+    ok = (isfinite(rows[i].value) ? fprintf(f, "%s,%.8g,%s\n", rows[i].key, rows[i].value, note)
+                                  : fprintf(f, "%s,n/a,%s\n", rows[i].key, note)) > 0 &&
          ok;
+  }
   ok = (fclose(f) == 0) && ok;
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
   PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
@@ -200,39 +217,94 @@ static PetscErrorCode intestine_write_summary(sim *s, const char **keys, const d
   PetscFunctionReturn(0);
 }
 
+/* "%.4g" of v (and its unit), or "n/a" */
+static const char *intestine_num(char *buf, size_t len, double v) {
+  if (isfinite(v))
+    snprintf(buf, len, "%.4g", v);
+  else
+    snprintf(buf, len, "n/a");
+  return buf;
+}
+static const char *intestine_speed(char *buf, size_t len, double v) {
+  if (isfinite(v))
+    snprintf(buf, len, "%.4g m/s", v);
+  else
+    snprintf(buf, len, "n/a");
+  return buf;
+}
+
 static PetscErrorCode intestine_tracking_finish(diagnostic *self, sim *s) {
   const sph_params *sp = sph_params_get(s);
   intestine_tracking *c = self->data;
-  double tw, Tw, delay, uF;
+  const PetscInt n = c->n_hist;
+  const double *t = c->hist_t, b = c->lay.b, nu = sp->nu;
+  double tw, Tw, delay;
   PetscInt64 fluid, parked;
+  char n1[32], n2[32], n3[32], n4[32], n5[32];
   PetscFunctionBeginUser;
   PetscCall(peristalsis_get(c->lay.peri, &tw, &Tw, NULL, NULL, &delay));
-  PetscCall(tracking_slope(c->hist_t, c->hist_x, c->n_hist, &uF));
-  /* the initial-slope rule (when the level drops, x_F bends over): the slope
-   * while pocket 0 squeezes in the first wave, the front's first advance */
-  double uF0 = NAN;
+  /* a row lies within dt/2 of its output time (the driver's schedule) */
+  const double tol = s->dt;
+  intestine_front fr;
+  PetscCall(intestine_measures_front(t, c->hist_x, n, delay, Tw, peristalsis_waves(c->lay.peri),
+                                     c->lay.uf_initial_waves, c->lay.uf_r2_min, tol, &fr));
+  /* the front's first advance: the slope while pocket 0 first squeezes (the
+   * first contiguous rows with s_0 > 0) */
+  double u_sq = NAN;
   {
     PetscInt i0 = -1, n0 = 0;
-    for (PetscInt i = 0; i < c->n_hist; i++)
-      if (peristalsis_value(c->lay.peri, c->hist_t[i], 0) > 0) {
+    for (PetscInt i = 0; i < n; i++)
+      if (peristalsis_value(c->lay.peri, t[i], 0) > 0) {
         if (i0 < 0)
           i0 = i;
         if (i == i0 + n0)
-          n0++; /* the first contiguous squeeze only */
+          n0++;
       }
     if (i0 >= 0)
-      PetscCall(tracking_slope(c->hist_t + i0, c->hist_x + i0, n0, &uF0));
+      PetscCall(tracking_slope(t + i0, c->hist_x + i0, n0, &u_sq));
   }
+  /* alpha after one period, and at the end of the last whole wave */
+  double t_aT, t_aE = NAN;
+  const double aT = intestine_measures_at(t, c->hist_a, n, delay + Tw, tol, &t_aT);
+  const double aE = fr.waves >= 1
+                        ? intestine_measures_at(t, c->hist_a, n, delay + fr.waves * Tw, tol, &t_aE)
+                        : NAN;
   PetscCall(intestine_fluid_counts(c, s, &fluid, &parked));
   double a_body[DMHS_DIM];
   body_force_at(c->lay.body, s->t, a_body);
-  const double nu = sp->nu, g = fabs(a_body[1]);
-  const double Vw = c->lay.n_pockets * c->lay.b / Tw;
-  const PetscBool reached = isnan(c->alpha_T) ? PETSC_FALSE : PETSC_TRUE;
-  const double a = c->alpha_T;
-  const double uP = a / (1 - a) * Vw / c->lay.n_pockets, uS = a * Vw;
+  const double g = fabs(a_body[1]);
+  const double Vw = c->lay.n_pockets * b / Tw;
+  double uP, uS;
+  char why_pump[96];
+  intestine_measures_pumping(aT, Vw, c->lay.n_pockets, &uP, &uS, why_pump, sizeof(why_pump));
+  const double Re = intestine_measures_reynolds(b, fr.u_F, nu);
+  const double Re_P = intestine_measures_reynolds(b, uP, nu);
   const PetscBool measured = c->lift_max > c->lay.dx ? PETSC_TRUE : PETSC_FALSE;
   const double h = measured ? c->lift_max : c->lay.amplitude;
+  const double Ga = h * h * h * g / (nu * nu), Fr = Vw / sqrt(g * h), Lambda = h / c->lay.level;
+
+  /* why a value is n/a */
+  char why_aT[128] = "", why_aE[128] = "", why_Re[128] = "", why_ReP[128] = "", why_sq[96] = "";
+  const double t_last = n ? t[n - 1] : s->t;
+  if (!isfinite(aT))
+    PetscCall(PetscSNPrintf(why_aT, sizeof(why_aT),
+                            "not reached: the rows end at %.6g s < t_d + T_w = %.6g s", t_last,
+                            delay + Tw));
+  if (!isfinite(aE))
+    PetscCall(PetscSNPrintf(why_aE, sizeof(why_aE), "no whole wave"));
+  if (!isfinite(fr.u_F))
+    PetscCall(PetscSNPrintf(why_Re, sizeof(why_Re), "u_F undefined"));
+  else if (!isfinite(Re))
+    PetscCall(PetscSNPrintf(why_Re, sizeof(why_Re),
+                            "u_F = %.4g m/s <= 0: the front did not advance", fr.u_F));
+  if (!isfinite(uP))
+    PetscCall(PetscSNPrintf(why_ReP, sizeof(why_ReP), "u_P undefined"));
+  else if (!isfinite(Re_P))
+    PetscCall(PetscSNPrintf(why_ReP, sizeof(why_ReP),
+                            "u_P = 0: no tracked liquid out of pocket 0 after one period"));
+  if (!isfinite(u_sq))
+    PetscCall(PetscSNPrintf(why_sq, sizeof(why_sq), "pocket 0 squeezed in fewer than 2 rows"));
+
   PetscCall(PetscPrintf(s->comm,
                         "intestine: fluid %" PetscInt64_FMT " in the computation + %" PetscInt64_FMT
                         " overflowed (pocket N+1, parked) = %" PetscInt64_FMT " of %" PetscInt64_FMT
@@ -244,64 +316,123 @@ static PetscErrorCode intestine_tracking_finish(diagnostic *self, sim *s) {
       "liquid in the membrane (between its top and bottom layers) at most %" PetscInt64_FMT
       ", through it %" PetscInt64_FMT " particles\n",
       c->rho_dev_max, c->mach_max, c->inside_max, c->through_max));
-  PetscCall(PetscPrintf(
-      s->comm,
-      "intestine: front velocity u_F = %g m/s (least squares of x_F over %" PetscInt_FMT
-      " rows, t in [%g, %g] s)\n",
-      uF, c->n_hist, c->n_hist ? c->hist_t[0] : NAN, c->n_hist ? c->hist_t[c->n_hist - 1] : NAN));
-  PetscCall(PetscPrintf(
-      s->comm, "intestine: initial front velocity (while pocket 0 squeezes) u_F0 = %g m/s\n", uF0));
-  PetscCall(PetscPrintf(s->comm, "intestine: V_w = (N+1) b / T_w = %g m/s (T_w = %g s)\n", Vw, Tw));
-  if (reached)
-    PetscCall(PetscPrintf(s->comm,
-                          "intestine: alpha after one period = %g, u_P = alpha/(1-alpha) V_w/(N+1) "
-                          "= %g m/s, u_S = alpha V_w = %g m/s\n",
-                          a, uP, uS));
-  else
-    PetscCall(PetscPrintf(s->comm,
-                          "intestine: alpha after one period: not reached (t_end < delay + T_w = "
-                          "%g s); u_P, u_S undefined\n",
-                          delay + Tw));
   PetscCall(PetscPrintf(s->comm,
-                        "intestine: h = %g m (%s), Re = b u_F/nu = %g, Ga = h^3 g/nu^2 = %g, Fr = "
-                        "V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
-                        h,
-                        measured ? "largest measured segment lift"
-                                 : "configured amplitude A: no lift above dx measured",
-                        c->lay.b * uF / nu, h * h * h * g / (nu * nu), Vw / sqrt(g * h),
-                        h / c->lay.level));
+                        "intestine: V_w = (N+1) b / T_w = %g m/s (T_w = %g s, t_w = %g s, "
+                        "waves from t_d = %g s; %" PetscInt_FMT " whole in the rows)\n",
+                        Vw, Tw, tw, delay, fr.waves));
+  PetscCall(PetscPrintf(s->comm, "intestine: front velocity u_F = %s: %s\n",
+                        intestine_speed(n1, sizeof(n1), fr.u_F), fr.why));
+  if (fr.waves >= 1)
+    PetscCall(PetscPrintf(s->comm,
+                          "intestine:   least squares of x_F: over the %" PetscInt_FMT
+                          " whole wave(s) %s (R^2 %s, t in [%g, %g] s, %" PetscInt_FMT " rows); "
+                          "initial slope (first %" PetscInt_FMT
+                          " wave(s)) %s (R^2 %s); first wave %s\n",
+                          fr.waves, intestine_speed(n1, sizeof(n1), fr.line.slope),
+                          intestine_num(n2, sizeof(n2), fr.line.r2), fr.line.t0, fr.line.t1,
+                          fr.line.n, PetscMin(fr.waves, c->lay.uf_initial_waves),
+                          intestine_speed(n3, sizeof(n3), fr.initial.slope),
+                          intestine_num(n4, sizeof(n4), fr.initial.r2),
+                          intestine_speed(n5, sizeof(n5), fr.first_wave.slope)));
+  PetscCall(PetscPrintf(s->comm,
+                        "intestine:   the front's first advance (while pocket 0 first squeezes) "
+                        "u_F_squeeze = %s\n",
+                        intestine_speed(n1, sizeof(n1), u_sq)));
+  if (isfinite(aT))
+    PetscCall(
+        PetscPrintf(s->comm, "intestine: alpha after one period (row t = %g s) = %g", t_aT, aT));
+  else
+    PetscCall(PetscPrintf(s->comm, "intestine: alpha after one period: n/a (%s)", why_aT));
+  if (isfinite(aE))
+    PetscCall(PetscPrintf(s->comm, "; at the end of wave %" PetscInt_FMT " (row t = %g s) = %g\n",
+                          fr.waves, t_aE, aE));
+  else
+    PetscCall(PetscPrintf(s->comm, "; at the last whole wave's end: n/a (%s)\n", why_aE));
+  if (isfinite(uS))
+    PetscCall(PetscPrintf(s->comm,
+                          "intestine: u_P = alpha/(1-alpha) V_w/(N+1) = %s%s%s%s, u_S = alpha "
+                          "V_w = %g m/s\n",
+                          intestine_speed(n1, sizeof(n1), uP), isfinite(uP) ? "" : " (",
+                          isfinite(uP) ? "" : why_pump, isfinite(uP) ? "" : ")", uS));
+  else
+    PetscCall(PetscPrintf(s->comm, "intestine: u_P, u_S: n/a (%s)\n", why_pump));
+  PetscCall(
+      PetscPrintf(s->comm,
+                  "intestine: h = %g m (%s), Re = b u_F/nu = %s%s%s%s, Re_P = b u_P/nu = "
+                  "%s%s%s%s, Ga = h^3 g/nu^2 = %g, Fr = V_w/sqrt(g h) = %g, Lambda = h/L = %g\n",
+                  h,
+                  measured ? "largest measured segment lift"
+                           : "configured amplitude A: no lift above dx measured",
+                  intestine_num(n1, sizeof(n1), Re), why_Re[0] ? " (" : "", why_Re,
+                  why_Re[0] ? ")" : "", intestine_num(n2, sizeof(n2), Re_P), why_ReP[0] ? " (" : "",
+                  why_ReP, why_ReP[0] ? ")" : "", Ga, Fr, Lambda));
   PetscCall(csv_close(&c->csv, "intestine.csv"));
   if (s->rank == 0) {
-    const double Re = c->lay.b * uF / nu, Ga = h * h * h * g / (nu * nu), Fr = Vw / sqrt(g * h),
-                 Lambda = h / c->lay.level;
-    const double values[] = {c->lay.b,
-                             c->lay.level,
-                             nu,
-                             Tw,
-                             Vw,
-                             uF,
-                             uF0,
-                             a,
-                             uP,
-                             uS,
-                             h,
-                             Re,
-                             Ga,
-                             Fr,
-                             Lambda,
-                             c->rho_dev_max,
-                             c->mach_max,
-                             (double)c->inside_max,
-                             (double)c->through_max,
-                             (double)fluid,
-                             (double)parked,
-                             s->t};
-    static const char *keys[] = {
-        "b",           "level",   "nu",       "T_w",         "V_w",      "u_F",
-        "u_F_initial", "alpha_T", "u_P",      "u_S",         "h",        "Re",
-        "Ga",          "Fr",      "Lambda",   "rho_dev_max", "mach_max", "in_membrane_max",
-        "through_max", "fluid",   "overflow", "t_end"};
-    PetscCall(intestine_write_summary(s, keys, values, (PetscInt)(sizeof(keys) / sizeof(keys[0]))));
+    summary_row rows[] = {
+        {"b", b, ""},
+        {"level", c->lay.level, ""},
+        {"nu", nu, ""},
+        {"t_w", tw, ""},
+        {"t_d", delay, "the first wave's start"},
+        {"T_w", Tw, ""},
+        {"V_w", Vw, ""},
+        {"waves", (double)fr.waves, "whole waves in the rows"},
+        {"u_F", fr.u_F, ""},
+        {"u_F_from_initial", isfinite(fr.u_F) ? (fr.from_initial ? 1.0 : 0.0) : NAN, ""},
+        {"u_F_line", fr.line.slope, ""},
+        {"u_F_line_r2", fr.line.r2, ""},
+        {"u_F_line_x0", fr.line.x0, "the line's x_F at t_d"},
+        {"u_F_line_t1", fr.waves >= 1 ? fr.line.t1 : NAN,
+         "the line's window ends here (it starts at t_d)"},
+        {"u_F_initial", fr.initial.slope, ""},
+        {"u_F_initial_r2", fr.initial.r2, ""},
+        {"u_F_initial_x0", fr.initial.x0, "the line's x_F at t_d"},
+        {"u_F_initial_t1", fr.waves >= 1 ? fr.initial.t1 : NAN,
+         "the line's window ends here (it starts at t_d)"},
+        {"u_F_first_wave", fr.first_wave.slope, ""},
+        {"u_F_squeeze", u_sq, ""},
+        {"alpha_T", aT, ""},
+        {"alpha_T_t", t_aT, "the row's time"},
+        {"alpha_end", aE, ""},
+        {"alpha_end_t", t_aE, "the row's time"},
+        {"u_P", uP, ""},
+        {"u_S", uS, ""},
+        {"h", h, measured ? "largest measured segment lift" : "the haustral depth A"},
+        {"Re", Re, ""},
+        {"Re_P", Re_P, ""},
+        {"Ga", Ga, ""},
+        {"Fr", Fr, ""},
+        {"Lambda", Lambda, ""},
+        {"rho_dev_max", c->rho_dev_max, ""},
+        {"mach_max", c->mach_max, ""},
+        {"in_membrane_max", (double)c->inside_max, ""},
+        {"through_max", (double)c->through_max, ""},
+        {"fluid", (double)fluid, ""},
+        {"overflow", (double)parked, ""},
+        {"t_end", s->t, ""},
+    };
+    const PetscInt nrows = (PetscInt)(sizeof(rows) / sizeof(rows[0]));
+    for (PetscInt i = 0; i < nrows; i++) {
+      const char *k = rows[i].key, *why = NULL;
+      if (!strcmp(k, "u_F") ||
+          (!strncmp(k, "u_F_", 4) && strcmp(k, "u_F_squeeze") && !isfinite(rows[i].value)))
+        why = fr.why;
+      else if (!strcmp(k, "u_F_squeeze"))
+        why = why_sq;
+      else if (!strcmp(k, "alpha_T") || !strcmp(k, "alpha_T_t"))
+        why = why_aT;
+      else if (!strcmp(k, "alpha_end") || !strcmp(k, "alpha_end_t"))
+        why = why_aE;
+      else if ((!strcmp(k, "u_P") || !strcmp(k, "u_S")) && !isfinite(rows[i].value))
+        why = why_pump;
+      else if (!strcmp(k, "Re"))
+        why = why_Re;
+      else if (!strcmp(k, "Re_P"))
+        why = why_ReP;
+      if (why && why[0])
+        rows[i].note = why;
+    }
+    PetscCall(intestine_write_summary(s, rows, nrows));
   }
   PetscFunctionReturn(0);
 }
@@ -310,14 +441,15 @@ static PetscErrorCode intestine_tracking_checkpoint_write(diagnostic *self, sim 
                                                           checkpoint_io *io) {
   intestine_tracking *c = self->data;
   const PetscInt64 ints[5] = {c->n_white0, c->n_red0, c->n_hist, c->inside_max, c->through_max};
-  const double reals[4] = {c->alpha_T, c->lift_max, c->rho_dev_max, c->mach_max};
+  const double reals[3] = {c->lift_max, c->rho_dev_max, c->mach_max};
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(checkpoint_put_ints(io, "intestine_ints", ints, 5));
-  PetscCall(checkpoint_put_reals(io, "intestine_reals", reals, 4));
+  PetscCall(checkpoint_put_reals(io, "intestine_reals", reals, 3));
   if (c->n_hist) {
     PetscCall(checkpoint_put_reals(io, "intestine_hist_t", c->hist_t, c->n_hist));
     PetscCall(checkpoint_put_reals(io, "intestine_hist_x", c->hist_x, c->n_hist));
+    PetscCall(checkpoint_put_reals(io, "intestine_hist_alpha", c->hist_a, c->n_hist));
   }
   PetscFunctionReturn(0);
 }
@@ -326,27 +458,36 @@ static PetscErrorCode intestine_tracking_checkpoint_read(diagnostic *self, sim *
                                                          checkpoint_io *io) {
   intestine_tracking *c = self->data;
   PetscInt64 ints[5];
-  double reals[4];
+  double reals[3];
+  PetscInt n_alpha;
   PetscFunctionBeginUser;
   (void)s;
   PetscCall(checkpoint_get_ints(io, "intestine_ints", ints, 5));
-  PetscCall(checkpoint_get_reals(io, "intestine_reals", reals, 4));
+  /* a checkpoint whose history covers the first wave only (no alpha rows) cannot give
+   * the measures over the whole run */
+  PetscCall(checkpoint_get_length(io, "intestine_hist_alpha", &n_alpha));
+  PetscCheck(ints[2] == 0 || n_alpha == ints[2], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "the checkpoint's intestine history has no alpha rows: it was written by a dmhs "
+             "that kept x_F over the first wave only; continue it with that version");
+  PetscCall(checkpoint_get_reals(io, "intestine_reals", reals, 3));
   c->n_white0 = ints[0];
   c->n_red0 = ints[1];
   c->n_hist = c->cap_hist = (PetscInt)ints[2];
-  c->alpha_T = reals[0];
-  c->lift_max = reals[1];
-  c->rho_dev_max = reals[2];
-  c->mach_max = reals[3];
+  c->lift_max = reals[0];
+  c->rho_dev_max = reals[1];
+  c->mach_max = reals[2];
   c->inside_max = ints[3];
   c->through_max = ints[4];
   PetscCall(PetscFree(c->hist_t));
   PetscCall(PetscFree(c->hist_x));
+  PetscCall(PetscFree(c->hist_a));
   if (c->n_hist) {
     PetscCall(PetscMalloc1(c->n_hist, &c->hist_t));
     PetscCall(PetscMalloc1(c->n_hist, &c->hist_x));
+    PetscCall(PetscMalloc1(c->n_hist, &c->hist_a));
     PetscCall(checkpoint_get_reals(io, "intestine_hist_t", c->hist_t, c->n_hist));
     PetscCall(checkpoint_get_reals(io, "intestine_hist_x", c->hist_x, c->n_hist));
+    PetscCall(checkpoint_get_reals(io, "intestine_hist_alpha", c->hist_a, c->n_hist));
   }
   PetscFunctionReturn(0);
 }
@@ -358,6 +499,7 @@ static PetscErrorCode intestine_tracking_destroy(diagnostic *self) {
     fclose(c->csv);
   PetscCall(PetscFree(c->hist_t));
   PetscCall(PetscFree(c->hist_x));
+  PetscCall(PetscFree(c->hist_a));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
 }
@@ -369,7 +511,6 @@ PetscErrorCode intestine_tracking_register(sim *s, const intestine_layout *lay) 
   PetscCall(diagnostic_create("intestine", &d));
   PetscCall(PetscNew(&c));
   c->lay = *lay;
-  c->alpha_T = NAN;
   d->data = c;
   d->output = "intestine.csv";
   d->when.at_outputs = PETSC_TRUE;

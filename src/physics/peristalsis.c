@@ -118,6 +118,11 @@ PetscErrorCode peristalsis_get(const module *m, double *t_w, double *T_w, PetscI
   PetscFunctionReturn(0);
 }
 
+PetscInt peristalsis_waves(const module *m) {
+  const peri_data *d = m->data;
+  return d->waves;
+}
+
 static PetscErrorCode peristalsis_set_from_options(module *self, sim *s) {
   peri_data *d = self->data;
   PetscFunctionBeginUser;

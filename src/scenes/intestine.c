@@ -43,6 +43,8 @@ typedef struct {
   double b, dx, level, amplitude, wall_height, weir;
   PetscInt layers, clamp, red_pocket;
   PetscBool red;
+  double uf_r2_min; /* the measures' u_F rule (intestine_measures.h) */
+  PetscInt uf_initial_waves;
   module *body, *rep, *peri;
   PetscInt64 n_fluid;   /* fluid gids 0 .. n_fluid - 1 */
   double x_end, x_park; /* (N+1) b; parking line past the weir */
@@ -88,7 +90,19 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
                              c->red, &c->red, NULL));
   PetscCall(PetscOptionsInt("-intestine_red_pocket", "Pocket of the red set [1]", NULL,
                             c->red_pocket, &c->red_pocket, NULL));
+  PetscCall(PetscOptionsReal("-intestine_uf_r2_min",
+                             "u_F: the least-squares line of x_F over the whole waves fits when "
+                             "its R^2 reaches this, else u_F is the initial slope [1]",
+                             NULL, c->uf_r2_min, &c->uf_r2_min, NULL));
+  PetscCall(PetscOptionsInt("-intestine_uf_initial_waves",
+                            "u_F's initial slope: the line over the first this many waves [1]",
+                            NULL, c->uf_initial_waves, &c->uf_initial_waves, NULL));
   PetscOptionsEnd();
+  PetscCheck(c->uf_r2_min > 0 && c->uf_r2_min <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_uf_r2_min must lie in (0, 1] (got %g)", c->uf_r2_min);
+  PetscCheck(c->uf_initial_waves >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_uf_initial_waves must be >= 1 (got %" PetscInt_FMT ")",
+             c->uf_initial_waves);
   PetscCheck(c->n_pockets >= 1 && c->b > 0 && c->dx > 0 && c->dx < 0.1 * c->b, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_pockets must be >= 1, -intestine_b > 0 and 0 < -intestine_dx < b/10");
@@ -306,7 +320,9 @@ static PetscErrorCode intestine_build(scene *self, sim *s) {
                                 .n_fluid = c->n_fluid,
                                 .mem = mem,
                                 .peri = c->peri,
-                                .body = c->body};
+                                .body = c->body,
+                                .uf_r2_min = c->uf_r2_min,
+                                .uf_initial_waves = c->uf_initial_waves};
   PetscCall(intestine_tracking_register(s, &lay));
   PetscFunctionReturn(0);
 }
@@ -356,6 +372,12 @@ PetscErrorCode intestine_scene_create(scene **out) {
   c->layers = 3;
   c->wall_height = 0.03;
   c->red_pocket = 4;
+  /* a line over 10 waves with each wave's pulse fits to R^2 > 0.997; a slope that
+   * changes by 1.5x halfway, or a front that stalls, falls below 0.99
+   * (doc/theory.md, "Peristalsis and tracking") */
+  c->uf_r2_min = 0.99;
+  /* the thesis's front slows after ~40 s at T_w = 13.8 s: three waves */
+  c->uf_initial_waves = 3;
   (*out)->name = "intestine";
   (*out)->set_from_options = intestine_set_from_options;
   (*out)->build = intestine_build;
