@@ -124,7 +124,11 @@ foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081
              "L157|-output_dir <output/intestine-L157>.*-intestine_level <0.0157>"
              "new-wave|-output_dir <output/intestine-new-wave>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <5>"
              "old-wave-red|-output_dir <output/intestine-old-wave-red>.*-intestine_level <0.0046>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-peristalsis_h <2>"
-             "fast-wave|-output_dir <output/intestine-fast-wave>.*-sph_c0 <15>.*-sph_av_alpha <0.1>.*-peristalsis_tw <0.0334448>")
+             "fast-wave|-output_dir <output/intestine-fast-wave>.*-sph_c0 <15>.*-sph_av_alpha <0.1>.*-peristalsis_tw <0.0334448>"
+             "L046-nu2e-6|-output_dir <output/intestine-L046-nu2e-6>.*-intestine_level <0.0046>.*-sph_nu <2e-06>.*-peristalsis_tw <0.6>.*-peristalsis_h <2>"
+             "L081-nu1.6e-6|-output_dir <output/intestine-L081-nu1.6e-6>.*-intestine_level <0.0081>.*-sph_nu <1.6e-06>.*-peristalsis_tw <0.6>.*-peristalsis_h <2>"
+             "L111-old-wave|-output_dir <output/intestine-L111-old-wave>.*-intestine_level <0.0111>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-sph_nu <1e-06>.*-peristalsis_tw <0.6>.*-peristalsis_h <2>"
+             "L111-new-wave|-output_dir <output/intestine-L111-new-wave>.*-intestine_level <0.0111>.*-intestine_red <true>.*-intestine_red_pocket <4>.*-sph_nu <1e-06>.*-peristalsis_tw <0.6>.*-peristalsis_h <5>")
   string(FIND "${case}" "|" bar)
   string(SUBSTRING "${case}" 0 ${bar} name)
   math(EXPR bar "${bar} + 1")
@@ -132,6 +136,26 @@ foreach(case "L081|-output_dir <output/intestine-L081>.*-intestine_level <0.0081
   add_test(NAME cli_colon_study_input_${name} COMMAND ${DMHS_EXPECT_OUTPUT} "${regex}"
     -- ${DMHS_EXE} -options_file input/intestine-${name}.opts -help)
   set_tests_properties(cli_colon_study_input_${name} PROPERTIES LABELS cli TIMEOUT 60
+                       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+endforeach()
+# the inputs of the thesis's colon figures start: each reads input/intestine.opts (from the
+# repository root), builds its case and runs 4 steps (~2-5 s). Checked in the run's output: the
+# liquid (the level), nu, the wave's H and T_w, and the CSV header's tracked sets (its first
+# line, printed after the run); a red set in pocket 4 has columns red_0 .. red_10.
+foreach(case "L081|particles: 29580 fluid.*nu = 1e-06 m\\^2/s.*T_w = 13.8 s, H = 2\\).*level 0.0081 m.*white_10,alpha,overflow"
+             "L046-nu2e-6|particles: 18380 fluid.*nu = 2e-06 m\\^2/s.*T_w = 13.8 s, H = 2\\).*level 0.0046 m.*white_10,alpha,overflow"
+             "L081-nu1.6e-6|particles: 29580 fluid.*nu = 1.6e-06 m\\^2/s.*T_w = 13.8 s, H = 2\\).*level 0.0081 m.*white_10,alpha,overflow"
+             "L111-old-wave|particles: 39180 fluid.*nu = 1e-06 m\\^2/s.*T_w = 13.8 s, H = 2\\).*level 0.0111 m.*alpha,red_0,.*red_4,.*red_10,overflow"
+             "L111-new-wave|particles: 39180 fluid.*nu = 1e-06 m\\^2/s.*T_w = 13.8 s, H = 5\\).*level 0.0111 m.*alpha,red_0,.*red_4,.*red_10,overflow")
+  string(FIND "${case}" "|" bar)
+  string(SUBSTRING "${case}" 0 ${bar} name)
+  math(EXPR bar "${bar} + 1")
+  string(SUBSTRING "${case}" ${bar} -1 regex)
+  set(dir ${DMHS_CLI_OUT}/colon-input-${name})
+  add_test(NAME cli_colon_input_starts_${name} COMMAND ${DMHS_EXPECT_OUTPUT} "${regex}"
+    -- sh -c "rm -rf ${dir} && \"$0\" -options_file input/intestine-${name}.opts -t_end 2.5e-5 -output_snapshots false -checkpoint_at_end false -output_dir ${dir} && head -n 2 ${dir}/intestine.csv"
+    ${DMHS_EXE})
+  set_tests_properties(cli_colon_input_starts_${name} PROPERTIES LABELS cli TIMEOUT 120
                        WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 endforeach()
 # scripts/post/plot_intestine_study.py on synthetic summaries: Re, Re_P, a run with alpha_T n/a skipped,
