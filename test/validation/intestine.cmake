@@ -47,6 +47,31 @@ add_test(NAME validation_intestine_plot
          COMMAND sh -c "rm -f ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine.py ${DMHS_INTESTINE_PLOT_DIR} && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine-pockets.csv")
 set_tests_properties(validation_intestine_plot PROPERTIES LABELS validation TIMEOUT 60
                      FIXTURES_REQUIRED intestine_quick)
+# scripts/post/plot_intestine_snapshot.py (Figs. 3.3 and 3.10) on the quick output: five panels at
+# 0, 1, 2, 3 and 4 t_w after the wave's start (t_d = 0.02 s, t_w = 0.06 s), each stamped with its
+# snapshot's own time in t_w (the summary line), and a PNG larger than 10 kB. A missing run
+# directory, and a time the snapshots do not cover (9 t_w: the run ends at 4 t_w), each fail with
+# exit status 1 and one line naming the cause.
+set(DMHS_INTESTINE_SNAP ${DMHS_INTESTINE_OUT}/snapshot-plot/intestine-snapshots.png)
+add_test(NAME validation_intestine_snapshot_plot
+         COMMAND ${DMHS_EXPECT_OUTPUT}
+                 "wrote .*intestine-snapshots.png \\(5 panels, wave 1, t = 0, 1, 2, 3, 4 t_w\\)"
+                 -- sh -c "rm -f ${DMHS_INTESTINE_SNAP} && \"$0\" ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_snapshot.py ${DMHS_INTESTINE_OUT}/quick --at 0,1,2,3,4 --out ${DMHS_INTESTINE_SNAP} && test $(wc -c < ${DMHS_INTESTINE_SNAP}) -gt 10240"
+                 ${DMHS_PYTHON})
+set_tests_properties(validation_intestine_snapshot_plot PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED intestine_quick)
+add_test(NAME validation_intestine_snapshot_plot_missing
+         COMMAND bash ${PROJECT_SOURCE_DIR}/test/cli/expect_fail.sh "no-such-run: no such directory" --lines 1 --
+                 ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_snapshot.py
+                 ${DMHS_INTESTINE_OUT}/no-such-run)
+set_tests_properties(validation_intestine_snapshot_plot_missing PROPERTIES LABELS validation TIMEOUT 60)
+add_test(NAME validation_intestine_snapshot_plot_uncovered
+         COMMAND bash ${PROJECT_SOURCE_DIR}/test/cli/expect_fail.sh
+                 "no snapshot near t = 0.56 s \\(9 t_w into wave 1\\): the snapshots span 0 .. 0.2" --lines 1 --
+                 ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine_snapshot.py
+                 ${DMHS_INTESTINE_OUT}/quick --at 0,9 --out ${DMHS_INTESTINE_OUT}/snapshot-plot/uncovered.png)
+set_tests_properties(validation_intestine_snapshot_plot_uncovered PROPERTIES LABELS validation TIMEOUT 60
+                     FIXTURES_REQUIRED intestine_quick)
 # The original wave against the new one (Fig. 3.12) on the quick case over
 # one whole wave (T_w = 0.54 s, to 0.57 s, ~20 s each on one core), red set
 # in pocket 1: both runs within the quick run's bounds, then
