@@ -22,7 +22,7 @@ typedef struct {
 /* The front velocity: the least-squares line of x_F over the run's whole waves
  * ([t_d, t_d + waves T_w]); where that line does not fit (r2 < r2_min) and the
  * run is longer than initial_waves, the initial slope, the line over the first
- * initial_waves waves, if it fits better (a higher r2). */
+ * initial_waves waves. */
 typedef struct {
   PetscInt waves;            /* whole waves in the rows (capped by the schedule's waves) */
   intestine_line line;       /* over the whole waves */

@@ -4,11 +4,9 @@
  *   line over [t0, t1]:  x ~ x0 + slope (t - t0), least squares (GSL),
  *                        R^2 = 1 - sum (x - line)^2 / sum (x - mean x)^2
  *   whole waves:         n = floor((t_last - t_d)/T_w), capped by the schedule's waves
- *   u_F                = slope over [t_d, t_d + n T_w] when its R^2 >= r2_min;
- *                        else the initial slope, over [t_d, t_d + n_i T_w], when
- *                        n > n_i and that line fits better (a higher R^2): the
- *                        front bends later in the run (a still first wave, a
- *                        start-up, keeps the whole run's line)
+ *   u_F                = slope over [t_d, t_d + n T_w] when its R^2 >= r2_min
+ *                        or n <= n_i; else the initial slope, over
+ *                        [t_d, t_d + n_i T_w]
  *   u_P                = alpha/(1 - alpha) V_w/(N+1),  u_S = alpha V_w
  *   Re                 = b u/nu for u > 0
  *
@@ -106,11 +104,9 @@ PetscErrorCode intestine_measures_front(const double *t, const double *x, PetscI
                             "fewer than 2 rows in the %" PetscInt_FMT " whole wave(s)", f->waves));
     PetscFunctionReturn(0);
   }
-  if (f->line.r2 >= r2_min || f->waves <= initial_waves || !(f->initial.r2 > f->line.r2)) {
+  if (f->line.r2 >= r2_min || f->waves <= initial_waves) {
     f->u_F = f->line.slope;
-    const char *yet = f->line.r2 >= r2_min        ? ""
-                      : f->waves <= initial_waves ? ": the run is not longer than the initial waves"
-                                                  : ": the initial slope fits no better";
+    const char *yet = f->line.r2 >= r2_min ? "" : ": the run is not longer than the initial waves";
     char below[32] = "";
     if (!(f->line.r2 >= r2_min))
       PetscCall(PetscSNPrintf(below, sizeof(below), " < %.4g", r2_min));
