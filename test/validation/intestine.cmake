@@ -39,9 +39,10 @@ add_test(NAME validation_intestine_restart
 set_tests_properties(validation_intestine_restart PROPERTIES LABELS "validation;io" TIMEOUT 120
                      FIXTURES_REQUIRED intestine_quick)
 # scripts/post/plot_intestine.py on the quick output: intestine.png (x_F with
-# u_F and the initial slope, alpha, lifts, N/N0 per pocket, the density
-# deviation and Mach number) and intestine-pockets.csv; fails on a missing,
-# empty or non-finite input, and when the PNG is not written.
+# its lines, here the first advance only: half a wave leaves u_F n/a; alpha,
+# the lifts' map, N/N0 per pocket, the density deviation and Mach number) and
+# intestine-pockets.csv; fails on a missing, empty or non-finite input, and
+# when the PNG is not written.
 set(DMHS_INTESTINE_PLOT_DIR ${DMHS_INTESTINE_OUT}/quick)
 add_test(NAME validation_intestine_plot
          COMMAND sh -c "rm -f ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/post/plot_intestine.py ${DMHS_INTESTINE_PLOT_DIR} && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine.png && test -s ${DMHS_INTESTINE_PLOT_DIR}/intestine-pockets.csv")
