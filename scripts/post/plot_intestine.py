@@ -25,6 +25,7 @@ is shown as n/a with the summary's reason.
 import argparse
 import math
 import os
+import textwrap
 
 import matplotlib
 
@@ -191,7 +192,7 @@ def main():
             why = notes.get(k, "")
             lines.append(f"{k}: n/a" + (f" ({why[:44]}{'...' if len(why) > 44 else ''})" if why else ""))
     if finite(s, "u_F"):
-        lines.append(f"u_F: {notes.get('u_F', '')[:60]}")
+        lines += textwrap.wrap(f"u_F: {notes.get('u_F', '')}", 58)
     x.text(0.0, 1.0, "\n".join(lines), va="top", family="monospace", fontsize=7.5)
     fig.suptitle(f"Intestine: {n_pockets} pockets, b = {s['b'] * 100:g} cm, level {s.get('level', 0) * 100:.3g} cm, "
                  f"nu = {s['nu']:.3g} m^2/s, T_w = {Tw:.3g} s; {n_done} wave(s) completed")
