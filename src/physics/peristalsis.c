@@ -163,12 +163,16 @@ static PetscErrorCode peristalsis_set_from_options(module *self, sim *s) {
              "-peristalsis_tw must be > 0 (got %g s)", d->t_w);
   PetscCheck(d->H >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-peristalsis_h must be >= 1 (got %" PetscInt_FMT ")", d->H);
-  PetscCheck(d->waves >= 0 && d->delay >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-peristalsis_waves and -peristalsis_delay must be >= 0");
+  PetscCheck(d->waves >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_waves must be >= 0 (got %" PetscInt_FMT ")", d->waves);
+  PetscCheck(d->delay >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_delay must be >= 0 s (got %g)", d->delay);
   PetscCheck(d->ramp >= 0 && d->ramp <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-peristalsis_ramp must lie in [0, 1]");
-  PetscCheck(d->support >= 0 && d->damping >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-peristalsis_support and -peristalsis_damping must be >= 0");
+             "-peristalsis_ramp must lie in [0, 1] (got %g)", d->ramp);
+  PetscCheck(d->support >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_support must be >= 0 N/m (got %g)", d->support);
+  PetscCheck(d->damping >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-peristalsis_damping must be >= 0 1/s (got %g)", d->damping);
   PetscFunctionReturn(0);
 }
 

@@ -78,10 +78,12 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
              d->K);
   PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-repulsion_rstar must be > 0 (got %g m)", d->rstar);
-  PetscCheck(d->p2 >= 1 && d->p1 > d->p2 && d->p1 <= 24, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-repulsion_p1 and -repulsion_p2 must satisfy 24 >= p1 > p2 >= 1 (got %" PetscInt_FMT
-             ", %" PetscInt_FMT "): p1 <= p2 would attract",
-             d->p1, d->p2);
+  PetscCheck(d->p2 >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-repulsion_p2 must be >= 1 (got %" PetscInt_FMT ")", d->p2);
+  PetscCheck(d->p1 > d->p2 && d->p1 <= 24, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-repulsion_p1 must lie in [%" PetscInt_FMT ", 24] (above -repulsion_p2: p1 <= p2 "
+             "would attract; got %" PetscInt_FMT ")",
+             d->p2 + 1, d->p1);
   self->reach = d->rstar;
   PetscFunctionReturn(0);
 }

@@ -161,8 +161,10 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCheck(sp->c0 > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_c0 must be > 0 (got %g)", sp->c0);
   PetscCheck(sp->nu >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-sph_nu must be >= 0 (got %g)",
              sp->nu);
-  PetscCheck(sp->av_alpha >= 0 && sp->av_beta >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-sph_av_alpha and -sph_av_beta must be >= 0 (got %g, %g)", sp->av_alpha, sp->av_beta);
+  PetscCheck(sp->av_alpha >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_av_alpha must be >= 0 (got %g)", sp->av_alpha);
+  PetscCheck(sp->av_beta >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sph_av_beta must be >= 0 (got %g)", sp->av_beta);
   PetscCheck(sp->p_background >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-sph_p_background must be >= 0 (got %g Pa)", sp->p_background);
   self->reach = sp->h;

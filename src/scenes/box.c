@@ -23,8 +23,11 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   PetscCall(PetscOptionsReal("-box_velocity", "Taylor-Green vortex amplitude U [m/s]", NULL,
                              b->velocity, &b->velocity, NULL));
   PetscOptionsEnd();
-  PetscCheck(b->nx > 0 && b->ny > 0 && b->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-box_nx, -box_ny and -box_dx must be > 0");
+  PetscCheck(b->nx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-box_nx must be > 0 (got %" PetscInt_FMT ")", b->nx);
+  PetscCheck(b->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-box_ny must be > 0 (got %" PetscInt_FMT ")", b->ny);
+  PetscCheck(b->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-box_dx must be > 0 m (got %g)", b->dx);
   s->dx = b->dx;
   /* the vein case's liquid (doc/cases.md) */
   module *sph;

@@ -62,11 +62,14 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
     PetscCall(PetscOptionsReal("-wall_speed", "Upper plate speed along x [m/s]", NULL,
                                c->wall_speed, &c->wall_speed, NULL));
   PetscOptionsEnd();
-  PetscCheck(c->width > 0 && c->length > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-channel_width and -channel_length must be > 0 (got %g, %g)", c->width, c->length);
-  PetscCheck(c->nx > 0 && c->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-channel_nx and -channel_ny must be > 0 (got %" PetscInt_FMT ", %" PetscInt_FMT ")",
-             c->nx, c->ny);
+  PetscCheck(c->width > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_width must be > 0 m (got %g)", c->width);
+  PetscCheck(c->length > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_length must be > 0 m (got %g)", c->length);
+  PetscCheck(c->nx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_nx must be > 0 (got %" PetscInt_FMT ")", c->nx);
+  PetscCheck(c->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-channel_ny must be > 0 (got %" PetscInt_FMT ")", c->ny);
   PetscCheck(c->wall_layers >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-channel_wall_layers must be >= 0");
   s->dx = c->width / (double)c->ny;

@@ -53,12 +53,19 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   PetscOptionsEnd();
   PetscCheck(f->crossing_interval >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flap_crossing_interval must be >= 1 (got %" PetscInt_FMT ")", f->crossing_interval);
-  PetscCheck(f->nx > 4 && f->ny > 4 && f->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flap_nx, -flap_ny must be > 4 and -flap_dx > 0");
+  PetscCheck(f->nx > 4, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_nx must be > 4 (got %" PetscInt_FMT ")", f->nx);
+  PetscCheck(f->ny > 4, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flap_ny must be > 4 (got %" PetscInt_FMT ")", f->ny);
+  PetscCheck(f->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flap_dx must be > 0 m (got %g)",
+             f->dx);
   PetscCheck(f->flap_rows >= 2 && f->flap_rows < f->ny - 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flap_rows must lie in [2, -flap_ny - 3] (got %" PetscInt_FMT ")", f->flap_rows);
+             "-flap_rows must lie in [2, %" PetscInt_FMT "] (-flap_ny - 3; got %" PetscInt_FMT ")",
+             f->ny - 3, f->flap_rows);
   PetscCheck(f->flap_x >= 0 && f->flap_x + 1 < f->nx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flap_column must lie in [0, -flap_nx - 2]");
+             "-flap_column must lie in [0, %" PetscInt_FMT "] (-flap_nx - 2; got %" PetscInt_FMT
+             ")",
+             f->nx - 2, f->flap_x);
   PetscCheck(f->solid_density_ratio > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flap_density_ratio must be > 0");
   s->dx = f->dx;

@@ -103,14 +103,25 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   PetscCheck(c->uf_initial_waves >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_uf_initial_waves must be >= 1 (got %" PetscInt_FMT ")",
              c->uf_initial_waves);
-  PetscCheck(c->n_pockets >= 1 && c->b > 0 && c->dx > 0 && c->dx < 0.1 * c->b, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
-             "-intestine_pockets must be >= 1, -intestine_b > 0 and 0 < -intestine_dx < b/10");
-  PetscCheck(c->level > c->dx && c->amplitude >= 0 && c->wall_height >= 0 && c->weir >= 0, s->comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
-             "-intestine_level must exceed dx; amplitude, wall height and weir must be >= 0");
-  PetscCheck(c->layers >= 2 && c->clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-intestine_membrane_layers must be >= 2 and -intestine_clamp >= 1");
+  PetscCheck(c->n_pockets >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_pockets must be >= 1 (got %" PetscInt_FMT ")", c->n_pockets);
+  PetscCheck(c->b > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-intestine_b must be > 0 m (got %g)",
+             c->b);
+  PetscCheck(c->dx > 0 && c->dx < 0.1 * c->b, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_dx must lie in (0, %g) m (a tenth of -intestine_b; got %g)", 0.1 * c->b,
+             c->dx);
+  PetscCheck(c->level > c->dx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_level must exceed -intestine_dx = %g m (got %g)", c->dx, c->level);
+  PetscCheck(c->amplitude >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_amplitude must be >= 0 m (got %g)", c->amplitude);
+  PetscCheck(c->wall_height >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_wall_height must be >= 0 m (got %g)", c->wall_height);
+  PetscCheck(c->weir >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_weir must be >= 0 m (got %g)", c->weir);
+  PetscCheck(c->layers >= 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_membrane_layers must be >= 2 (got %" PetscInt_FMT ")", c->layers);
+  PetscCheck(c->clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-intestine_clamp must be >= 1 (got %" PetscInt_FMT ")", c->clamp);
   PetscCheck(!c->red || (c->red_pocket > 0 && c->red_pocket < c->n_pockets), s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_red_pocket must lie in [1, N] (got %" PetscInt_FMT ")", c->red_pocket);

@@ -175,9 +175,10 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
       "default P1, the sinus-side peak stress, and P2, the longest residence)",
       NULL, v->clots, &v->clots, NULL));
   PetscOptionsEnd();
-  PetscCheck(v->dx > 0 && v->width > 10 * v->dx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-vein_dx must be > 0 and -vein_width > 10 dx (got dx = %g m, W = %g m)", v->dx,
-             v->width);
+  PetscCheck(v->dx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-vein_dx must be > 0 m (got %g)",
+             v->dx);
+  PetscCheck(v->width > 10 * v->dx, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-vein_width must be > %g m (10 -vein_dx; got %g)", 10 * v->dx, v->width);
   PetscCheck(v->diameter >= v->width, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-vein_sinus_diameter (%g m) must be >= -vein_width (%g m)", v->diameter, v->width);
   PetscCheck(

@@ -243,3 +243,14 @@ dmhs_cli_fail(cli_vein_bad_ka "-vein_leaflet_ka must be >= 0 J \\(got -1"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_leaflet_ka -1 -output_dir ${DMHS_CLI_OUT}/vein-bad-ka)
 dmhs_cli_fail(cli_vein_bad_wall_layers "-vein_wall_layers must be >= 1 \\(got 0\\)"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_wall_layers 0 -output_dir ${DMHS_CLI_OUT}/vein-bad-layers)
+# one option per message, its value and its range, in the other scenes and modules too
+dmhs_cli_fail(cli_box_bad_nx "-box_nx must be > 0 \\(got 0\\)"
+  -scene box -box_nx 0 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/box-bad-nx)
+dmhs_cli_fail(cli_flap_bad_column "-flap_column must lie in \\[0, 38\\] \\(-flap_nx - 2; got 999\\)"
+  -scene flap -flap_column 999 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/flap-bad-column)
+dmhs_cli_fail(cli_intestine_bad_weir "-intestine_weir must be >= 0 m \\(got -1"
+  -scene intestine -intestine_weir -1 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/intestine-bad-weir)
+dmhs_cli_fail(cli_sph_bad_av_beta "-sph_av_beta must be >= 0 \\(got -1"
+  -scene box -sph_av_beta -1 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/sph-bad-beta)
+dmhs_cli_fail(cli_repulsion_bad_p1 "-repulsion_p1 must lie in \\[3, 24\\] .*got 2\\)"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -repulsion_p1 2 -repulsion_p2 2 -output_dir ${DMHS_CLI_OUT}/repulsion-bad-p1)
