@@ -473,7 +473,7 @@ static PetscErrorCode agglomeration_set_from_options(module *self, sim *s) {
   PetscCheck(d->max_bonds >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-agglomeration_max_bonds must be >= 1 (got %" PetscInt_FMT ")", d->max_bonds);
   PetscCheck(d->rng_seed >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-agglomeration_seed must be >= 0");
+             "-agglomeration_seed must be >= 0 (got %" PetscInt_FMT ")", d->rng_seed);
   PetscCheck(!set_points || (n >= 2 && n % 2 == 0), s->comm, PETSC_ERR_ARG_SIZ,
              "-agglomeration_seeds takes pairs x,y (got %" PetscInt_FMT
              " values, at most %d points)",

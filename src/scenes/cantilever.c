@@ -43,10 +43,13 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
                              c->st.mass, &c->st.mass, NULL));
   PetscOptionsEnd();
   PetscCheck(c->st.n_clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-cantilever_clamp must be >= 1");
+             "-cantilever_clamp must be >= 1 (got %" PetscInt_FMT ")", c->st.n_clamp);
   PetscCheck(c->st.n >= c->st.n_clamp + 2, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-cantilever_n must be >= -cantilever_clamp + 2 (got %" PetscInt_FMT ")", c->st.n);
-  PetscCheck(c->st.mass > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-cantilever_mass must be > 0");
+             "-cantilever_n must be >= %" PetscInt_FMT " (-cantilever_clamp + 2; got %" PetscInt_FMT
+             ")",
+             c->st.n_clamp + 2, c->st.n);
+  PetscCheck(c->st.mass > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-cantilever_mass must be > 0 kg (got %g)", c->st.mass);
   PetscCall(fields_enable("x0")); /* the tip's deflection */
   PetscCall(solid_modules_enable(s, BOND_HARMONIC));
   PetscCall(bond_set_default(s, CANTILEVER_K, CANTILEVER_R0, 0.5 * CANTILEVER_R0));

@@ -71,7 +71,7 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
   PetscCheck(c->ny > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-channel_ny must be > 0 (got %" PetscInt_FMT ")", c->ny);
   PetscCheck(c->wall_layers >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-channel_wall_layers must be >= 0");
+             "-channel_wall_layers must be >= 0 (got %" PetscInt_FMT ")", c->wall_layers);
   s->dx = c->width / (double)c->ny;
   const double dx_along = c->length / (double)c->nx;
   PetscCheck(fabs(dx_along - s->dx) <= 1e-9 * s->dx, s->comm, PETSC_ERR_ARG_INCOMP,

@@ -67,7 +67,7 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
              ")",
              f->nx - 2, f->flap_x);
   PetscCheck(f->solid_density_ratio > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flap_density_ratio must be > 0");
+             "-flap_density_ratio must be > 0 (got %g)", f->solid_density_ratio);
   s->dx = f->dx;
   /* A viscous liquid so that the flow settles in a short run (override with -sph_*).
    * c0: the flap carries most of the drive, F ~ rho g (channel area), as a
