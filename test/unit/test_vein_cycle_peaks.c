@@ -7,7 +7,7 @@
 #include "unit_common.h"
 #include "diag/vein_cycle_peaks.h"
 
-#define T 4.0
+#define T      4.0
 #define DT_ROW 0.02
 
 /* rows from t0 to t1, each time off by +-1.3e-6 s (alternating), stress 1 except a peak
