@@ -28,8 +28,8 @@
 # rate proportional to dt (doc/theory.md, "Time integration"; doc/lammps.md, "The
 # vein twin"); dmhs as shipped does not. A restarted dmhs run keeps its
 # checkpoint's dt, hence part A starts from rest.
-# Cost at the defaults, one core each: LAMMPS ~15-25 min (500k steps), each dmhs
-# run ~15-20 min, part B ~5 min.
+# Cost at the defaults, one core each: LAMMPS ~20-25 min (500k steps), each dmhs
+# run ~10-15 min, part B ~5 min.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 parts="${1:-AB}"

@@ -10,8 +10,10 @@ wrote (within dt/2).
 At each time, per run: the liquid's kinetic energy E_k [J per m of depth], its
 mean x velocity <u> [m/s], the mean x velocity at the inlet station u_in
 (liquid within dx of x = dx/2, as dmhs's vein.csv), max |v| of the liquid,
-mean and largest |rho/rho0 - 1| of the liquid, and each leaflet tip's centre
-(the mean of its last column) [m]. Then, per dmhs run against LAMMPS, with the
+mean and largest |rho/rho0 - 1| of the liquid, the ratio of the volume fluxes
+sum V v_x/dx through the lattice column at the sinus's middle and at the inlet
+station (1 in an incompressible flow), and each leaflet tip's centre (the mean
+of its last column) [m]. Then, per dmhs run against LAMMPS, with the
 changes since the start: those of E_k, <u> and u_in relative to LAMMPS's; the
 particle-by-particle (same ids) RMS difference of the liquid velocities relative
 to the RMS of LAMMPS's velocity change, in all, within h of a wall or clamp
@@ -76,7 +78,14 @@ def metrics(s, mass_of_type, rho0, dx, length):
     d = (x - xs + 0.5 * length) % length - 0.5 * length
     st = np.abs(d) < dx
     drho = np.abs(s["rho"][liq] / rho0 - 1)
-    out = {"E_k": 0.5 * (m * speed2).sum(), "u_mean": (m * v[:, 0]).sum() / m.sum(),
+    # the volume flux sum V v_x / dx through the lattice column at the inlet station and at
+    # the sinus's middle (x = length/2): equal in an incompressible flow
+    vol = m / s["rho"][liq]
+
+    def flux(xc):
+        c = np.abs((x - xc + 0.5 * length) % length - 0.5 * length) < 0.5 * dx
+        return (vol[c] * v[c, 0]).sum() / dx
+    out = {"q_ratio": flux(0.5 * length) / flux(xs) if flux(xs) != 0 else np.nan,"E_k": 0.5 * (m * speed2).sum(), "u_mean": (m * v[:, 0]).sum() / m.sum(),
            "u_in": v[st, 0].mean() if st.any() else np.nan, "max_v": np.sqrt(speed2.max()),
            "mean_drho": drho.mean(), "max_drho": drho.max()}
     for k, lt in ((1, 3), (2, 4)):
@@ -167,7 +176,7 @@ def main():
             ms.append(m)
             print(f"  {name:14s} E_k {m['E_k']:.4e}  <u> {m['u_mean']:.4e}  u_in {m['u_in']:.4e}  "
                   f"max|v| {m['max_v']:.3e}  drho {m['mean_drho']:.2e} / {m['max_drho']:.2e}  "
-                  f"tip1 ({m['tip1'][0]:.5f}, {m['tip1'][1]:+.5f})  tip2 ({m['tip2'][0]:.5f}, "
+                  f"Q_sinus/Q_in {m['q_ratio']:.3f}  tip1 ({m['tip1'][0]:.5f}, {m['tip1'][1]:+.5f})  tip2 ({m['tip2'][0]:.5f}, "
                   f"{m['tip2'][1]:+.5f})")
         L = states[0]
         if L is None:
