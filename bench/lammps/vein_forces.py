@@ -33,16 +33,7 @@ import sys
 import h5py
 import numpy as np
 
-
-def near(x, sel_from, sel_to, r, length):
-    """For every particle in sel_from: is any particle of sel_to within r (periodic in x)?"""
-    xf, xt = x[sel_from], x[sel_to]
-    out = np.zeros(len(xf), dtype=bool)
-    for k in range(0, len(xf), 2048):
-        d = xf[k:k + 2048, None, :] - xt[None, :, :]
-        d[..., 0] = (d[..., 0] + 0.5 * length) % length - 0.5 * length
-        out[k:k + 2048] = ((d ** 2).sum(axis=2) < r * r).any(axis=1)
-    return out
+from vein_compare import near
 
 
 def main():

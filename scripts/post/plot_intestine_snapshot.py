@@ -26,7 +26,6 @@ with status 1 and one line naming the cause when the directory, intestine.csv
 or the snapshots are missing, or a time is not covered by the snapshots.
 """
 import argparse
-import glob
 import json
 import math
 import os
@@ -40,6 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import intestine_common as ic  # noqa: E402
+from snapshot_files import snapshot_files  # noqa: E402
 
 PROG = "plot_intestine_snapshot.py"
 FLUID, WALL, SOLID = 0, 1, 2  # particle types (snapshot field "type")
@@ -53,19 +53,7 @@ def die(msg):
 
 
 def snapshots(run_dir):
-    import h5py
-
-    paths = sorted(glob.glob(os.path.join(run_dir, "snap_*.h5")))
-    if not paths:
-        die(f"{os.path.join(run_dir, 'snap_*.h5')}: no snapshot (was the run made with -output_snapshots false?)")
-    out = []
-    for p in paths:
-        try:
-            with h5py.File(p, "r") as f:
-                out.append((float(np.ravel(f.attrs["time"])[0]), p))
-        except (OSError, KeyError) as e:
-            die(f"{p}: unreadable or no 'time' attribute ({e})")
-    return sorted(out)
+    return snapshot_files(run_dir, die)
 
 
 def read_snapshot(path):

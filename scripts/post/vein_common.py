@@ -18,13 +18,14 @@ Every reader calls fail() with a one-line message naming the file when it is
 missing, empty or lacks a column or dataset; fail() exits with status 1.
 """
 import csv
-import glob
 import math
 import os
 import re
 import sys
 
 import numpy as np
+
+from snapshot_files import snapshot_files
 
 PROG = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else "plot_vein"
 FLUID, WALL, SOLID = 0, 1, 2
@@ -107,19 +108,7 @@ def read_summary(path, need=()):
 
 
 def snapshots(run_dir):
-    import h5py
-
-    paths = sorted(glob.glob(os.path.join(run_dir, "snap_*.h5")))
-    if not paths:
-        fail(f"{os.path.join(run_dir, 'snap_*.h5')}: no snapshot")
-    out = []
-    for p in paths:
-        try:
-            with h5py.File(p, "r") as f:
-                out.append((float(np.ravel(f.attrs["time"])[0]), p))
-        except (OSError, KeyError) as e:
-            fail(f"{p}: unreadable or no 'time' attribute ({e})")
-    return sorted(out)
+    return snapshot_files(run_dir, fail)
 
 
 def nearest_snapshot(run_dir, t):
