@@ -39,7 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import intestine_common as ic  # noqa: E402
-from snapshot_files import snapshot_files  # noqa: E402
+from snapshot_files import marker_size, snapshot_files  # noqa: E402
 
 PROG = "plot_intestine_snapshot.py"
 FLUID, WALL, SOLID = 0, 1, 2  # particle types (snapshot field "type")
@@ -92,15 +92,6 @@ def parse_pockets(text, n):
     if not 0 <= a <= b < n:
         die(f"--pockets {text}: the run has pockets 0..{n - 1}")
     return a, b
-
-
-def marker_size(ax, spacing):
-    """Scatter size [pt^2] that draws a particle about `spacing` (data units of x) wide."""
-    fig = ax.figure
-    ax.apply_aspect()
-    x0, x1 = ax.get_xlim()
-    width_pt = ax.get_position().width * fig.get_figwidth() * 72.0
-    return (spacing * width_pt / abs(x1 - x0)) ** 2
 
 
 def main():

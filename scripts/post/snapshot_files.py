@@ -3,6 +3,7 @@
   snapshot_files(run_dir, fail)   [(time, path)] of RUN_DIR/snap_*.h5, sorted by time;
                                   fail(message) is called (and must not return) when there
                                   is none or one cannot be read
+  marker_size(ax, spacing)        scatter size [pt^2] that draws a particle spacing wide
 """
 import glob
 import os
@@ -24,3 +25,12 @@ def snapshot_files(run_dir, fail):
         except (OSError, KeyError) as e:
             fail(f"{p}: unreadable or no 'time' attribute ({e})")
     return sorted(out)
+
+
+def marker_size(ax, spacing):
+    """Scatter size [pt^2] that draws a particle about `spacing` (data units of x) wide."""
+    fig = ax.figure
+    ax.apply_aspect()
+    x0, x1 = ax.get_xlim()
+    width_pt = ax.get_position().width * fig.get_figwidth() * 72.0
+    return (spacing * width_pt / abs(x1 - x0)) ** 2

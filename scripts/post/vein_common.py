@@ -25,7 +25,7 @@ import sys
 
 import numpy as np
 
-from snapshot_files import snapshot_files
+from snapshot_files import marker_size, snapshot_files  # noqa: F401 (marker_size: vc.marker_size)
 
 PROG = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else "plot_vein"
 FLUID, WALL, SOLID = 0, 1, 2
@@ -261,15 +261,6 @@ def output_path(out, default_dir, name):
 def require_dir(path):
     if not os.path.isdir(path):
         fail(f"{path}: no such directory")
-
-
-def marker_size(ax, spacing):
-    """Scatter size [pt^2] that draws a particle about `spacing` (data units of x) wide."""
-    fig = ax.figure
-    ax.apply_aspect()
-    x0, x1 = ax.get_xlim()
-    width_pt = ax.get_position().width * fig.get_figwidth() * 72.0
-    return (spacing * width_pt / abs(x1 - x0)) ** 2
 
 
 def inlet_velocity(cols):
