@@ -8,10 +8,11 @@ build="${DMHS_BUILD_DIR:-$repo/build}"
 
 # Debian packages: compilers, MPI, PETSc 3.18, parallel HDF5, METIS, GSL, cmocka,
 # and Debian's own python3 with numpy/h5py/matplotlib for scripts/post and tests;
-# clang-format for the style check (ctest format_check).
+# clang-format for the style check (ctest format_check); MkDocs for the
+# documentation site (scripts/docs.sh, ctest doc_site).
 packages=(build-essential cmake pkg-config openmpi-bin libopenmpi-dev petsc-dev
           libhdf5-openmpi-dev libmetis-dev libgsl-dev libcmocka-dev clang-format
-          python3 python3-numpy python3-h5py python3-matplotlib)
+          python3 python3-numpy python3-h5py python3-matplotlib mkdocs python3-pymdownx)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

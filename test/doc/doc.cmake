@@ -11,3 +11,16 @@ set_tests_properties(doc_options_table PROPERTIES LABELS doc TIMEOUT 60)
 # clang-format is missing or not version 14, the tree's).
 add_test(NAME format_check COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/format_check.sh ${PROJECT_SOURCE_DIR})
 set_tests_properties(format_check PROPERTIES LABELS doc TIMEOUT 120 SKIP_RETURN_CODE 77)
+# doc_links: every relative link, image and heading anchor of README.md,
+# doc/**/*.md and bench/**/README.md resolves (test/doc/links.py).
+add_test(NAME doc_links COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/links.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(doc_links PROPERTIES LABELS doc TIMEOUT 60)
+# doc_readme_numbers: every number the README quotes beside a link is written
+# the same way in the page it links to (test/doc/readme_numbers.py).
+add_test(NAME doc_readme_numbers
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/readme_numbers.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(doc_readme_numbers PROPERTIES LABELS doc TIMEOUT 60)
+# doc_site: the pages build as a site with MkDocs in strict mode (scripts/docs.sh;
+# a page or link MkDocs cannot place fails it).
+add_test(NAME doc_site COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/docs.sh --out ${CMAKE_BINARY_DIR}/site-test)
+set_tests_properties(doc_site PROPERTIES LABELS doc TIMEOUT 120)
