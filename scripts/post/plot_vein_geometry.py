@@ -144,8 +144,11 @@ def main():
     ax.set_ylabel("y [mm]")
     ax.legend(loc="lower left", fontsize=8, ncol=5, markerscale=2, bbox_to_anchor=(0, 1.0), frameon=False,
               columnspacing=1.2, handletextpad=0.3)
+    # counted as dmhs counts them: the clamped root columns are wall particles
+    clamps = leaflet & (d["type"] != vc.SOLID)
     ax.set_title(f"t = {t0:g} s: {fluid.sum()} liquid ({(fluid & (d['tracer'] == 1)).sum()} in the sinus), "
-                 f"{wall.sum()} wall, {leaflet.sum()} leaflet particles", fontsize=10, pad=22)
+                 f"{(wall | clamps).sum()} wall ({clamps.sum()} of them leaflet clamps), "
+                 f"{(leaflet & ~clamps).sum()} leaflet particles", fontsize=10, pad=22)
     ax.add_patch(plt.Rectangle((zx[0], zy[0]), zx[1] - zx[0], zy[1] - zy[0], fill=False, ls="--", lw=0.8))
 
     az = fig.add_axes([(fw - zw) / 2 / fw, foot / fh, zw / fw, zh / fh])

@@ -96,6 +96,10 @@ def main():
     print(table)
     if args.table:
         with open(args.table, "w") as f:
+            f.write(f"# Error against run time: the {args.case} sweep\n\n"
+                    f"Every run of `scripts/post/sweep_channel.py --case {args.case}` (resolution, dt as a "
+                    f"fraction of its stability limit), its error against the series solution and its wall "
+                    f"time; the figure and what it shows: [validation.md](validation.md#error-against-run-time).\n\n")
             f.write(table)
     print(f"plot: {png}", file=sys.stderr)
 
