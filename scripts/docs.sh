@@ -20,22 +20,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-packages=(mkdocs python3-pymdownx)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null; then
-    echo "docs: installing ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -q
-    apt-get install -y -q --no-install-recommends "${missing[@]}"
-  else
-    echo "docs: missing Debian packages: ${missing[*]} (as root: apt-get install ${missing[*]})" >&2
-    exit 1
-  fi
-fi
+"$repo/scripts/debian_packages.sh" docs mkdocs python3-pymdownx
 
 # The site's sources: the README as index.md beside doc/ and the results'
 # pages, so that every relative link of the repository stays valid.

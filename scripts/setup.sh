@@ -13,22 +13,7 @@ build="${DMHS_BUILD_DIR:-$repo/build}"
 packages=(build-essential cmake pkg-config openmpi-bin libopenmpi-dev petsc-dev
           libhdf5-openmpi-dev libmetis-dev libgsl-dev libcmocka-dev clang-format
           python3 python3-numpy python3-h5py python3-matplotlib mkdocs python3-pymdownx)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null; then
-    echo "setup: installing ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -q
-    apt-get install -y -q --no-install-recommends "${missing[@]}"
-  else
-    echo "setup: missing Debian packages: ${missing[*]}" >&2
-    echo "setup: install them (as root: apt-get install ${missing[*]}) and run again" >&2
-    exit 1
-  fi
-fi
+"$repo/scripts/debian_packages.sh" setup "${packages[@]}"
 
 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE="${DMHS_BUILD_TYPE:-Release}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"

@@ -95,16 +95,21 @@ def check(repo):
     return broken
 
 
+def report(problems, failed, passed):
+    """Prints each problem, then the verdict; exits 1 when there is any."""
+    for line in problems:
+        print(line)
+    if problems:
+        print(failed.format(n=len(problems)))
+        sys.exit(1)
+    print(passed)
+
+
 def main():
     if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
         sys.exit("usage: links.py REPO")
-    broken = check(os.path.abspath(sys.argv[1]))
-    for line in broken:
-        print(line)
-    if broken:
-        print(f"links: {len(broken)} broken link(s)")
-        sys.exit(1)
-    print("links: every relative link and image resolves")
+    report(check(os.path.abspath(sys.argv[1])), "links: {n} broken link(s)",
+           "links: every relative link and image resolves")
 
 
 if __name__ == "__main__":

@@ -17,7 +17,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from links import LINK, strip_code_spans, text_lines  # noqa: E402
+from links import LINK, report, strip_code_spans, text_lines  # noqa: E402
 
 # a number with what is written straight after it that changes its meaning:
 # a factor (3x), a percentage (8 %), thousands (100k); a decimal point only
@@ -64,13 +64,9 @@ def main():
     args = [a for a in sys.argv[1:] if a != "-v"]
     if len(args) != 1 or not os.path.isdir(args[0]):
         sys.exit("usage: readme_numbers.py [-v] REPO")
-    missing = check(os.path.abspath(args[0]), "-v" in sys.argv)
-    for line in missing:
-        print(line)
-    if missing:
-        print(f"readme_numbers: {len(missing)} number(s) of the README not found in the pages they link to")
-        sys.exit(1)
-    print("readme_numbers: every number the README quotes is in the page it links to")
+    report(check(os.path.abspath(args[0]), "-v" in sys.argv),
+           "readme_numbers: {n} number(s) of the README not found in the pages they link to",
+           "readme_numbers: every number the README quotes is in the page it links to")
 
 
 if __name__ == "__main__":
