@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include "dmhs/sim.h"
 #include "dmhs/halo.h"
+#include "dmhs/gather.h"
 
 PetscErrorCode halo_check_set_from_options(sim *s) {
   PetscFunctionBeginUser;
@@ -35,26 +36,22 @@ PetscErrorCode halo_check_pairs(sim *s) {
   const PetscInt n_owned = ps->n_owned;
   const double cut = PetscMax(s->pair_cutoff, s->list_cutoff),
                cut2 = cut * cut; /* the list radius */
-  PetscMPIInt n_mine = (PetscMPIInt)(4 * n_owned), *counts, *displs;
-  double *mine, *all;
+  double(*mine)[4], (*all)[4];
+  size_t n_gathered;
   PetscInt64 *listed, *found;
   PetscInt n_listed = 0, bad = 0;
   PetscFunctionBeginUser;
   /* everybody's (gid, type, x, y) */
-  PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
-  PetscCallMPI(MPI_Allgather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, s->comm));
-  displs[0] = 0;
-  for (PetscMPIInt r = 0; r < s->size; r++)
-    displs[r + 1] = displs[r] + counts[r];
-  const PetscInt n_all = displs[s->size] / 4;
-  PetscCall(PetscMalloc2(n_mine + 1, &mine, displs[s->size] + 1, &all));
+  PetscCall(PetscMalloc1(n_owned + 1, &mine));
   for (PetscInt i = 0; i < n_owned; i++) {
-    mine[4 * i + 0] = (double)ps->gid[i];
-    mine[4 * i + 1] = (double)ps->type[i];
-    mine[4 * i + 2] = ps->x[i][0];
-    mine[4 * i + 3] = ps->x[i][1];
+    mine[i][0] = (double)ps->gid[i];
+    mine[i][1] = (double)ps->type[i];
+    mine[i][2] = ps->x[i][0];
+    mine[i][3] = ps->x[i][1];
   }
-  PetscCallMPI(MPI_Allgatherv(mine, n_mine, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, s->comm));
+  PetscCall(gather_all(s->comm, "-debug_halo particles", mine, (size_t)n_owned, sizeof(*mine), &all,
+                       &n_gathered, NULL));
+  const PetscInt n_all = (PetscInt)n_gathered;
 
   /* (owned row, neighbour gid) from the pair list, sorted */
   PetscCall(PetscMalloc1(2 * (2 * s->cel.n_pairs + 1), &listed));
@@ -76,7 +73,7 @@ PetscErrorCode halo_check_pairs(sim *s) {
   for (PetscInt i = 0; i < n_owned && bad < 5; i++) {
     PetscInt n_found = 0;
     for (PetscInt j = 0; j < n_all; j++) {
-      const double *o = all + 4 * j;
+      const double *o = all[j];
       if ((PetscInt64)o[0] == ps->gid[i])
         continue;
       if (ps->type[i] == PTYPE_WALL && (PetscInt)o[1] == PTYPE_WALL)
@@ -118,8 +115,8 @@ PetscErrorCode halo_check_pairs(sim *s) {
   }
   PetscCall(PetscFree(found));
   PetscCall(PetscFree(listed));
-  PetscCall(PetscFree2(mine, all));
-  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree(mine));
+  PetscCall(PetscFree(all));
   PetscInt bad_total;
   PetscCallMPI(MPI_Allreduce(&bad, &bad_total, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCheck(bad_total == 0, s->comm, PETSC_ERR_PLIB,

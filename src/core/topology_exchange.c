@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/topology.h"
+#include "dmhs/gather.h"
 
 /* A bond or an angle as it travels between ranks (gid[2] unused for bonds). */
 typedef struct {
@@ -74,26 +75,11 @@ PetscInt topology_lookup_row(const PetscInt64 *gid, const PetscInt *row, PetscIn
 /* Every rank's n messages, concatenated in rank order, on every rank. */
 static PetscErrorCode topology_allgather(MPI_Comm comm, const topology_msg *mine, PetscInt n,
                                          topology_msg **all, PetscInt *n_all) {
-  PetscMPIInt size, count = (PetscMPIInt)n, *counts, *displs;
+  size_t total;
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCheck((size_t)n * sizeof(topology_msg) < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "topology: %" PetscInt_FMT " entries at once exceed an MPI count", n);
-  PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
-  count = (PetscMPIInt)(n * (PetscInt)sizeof(topology_msg));
-  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts, 1, MPI_INT, comm));
-  size_t total = 0;
-  displs[0] = 0;
-  for (PetscMPIInt r = 0; r < size; r++) {
-    total += (size_t)counts[r];
-    PetscCheck(total < INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP,
-               "topology: the entries of all ranks exceed an MPI count");
-    displs[r + 1] = (PetscMPIInt)total;
-  }
-  *n_all = (PetscInt)(total / sizeof(topology_msg));
-  PetscCall(PetscMalloc1(*n_all + 1, all));
-  PetscCallMPI(MPI_Allgatherv(mine, count, MPI_BYTE, *all, counts, displs, MPI_BYTE, comm));
-  PetscCall(PetscFree2(counts, displs));
+  PetscCall(gather_all(comm, "topology entries", mine, (size_t)n, sizeof(topology_msg), all, &total,
+                       NULL));
+  *n_all = (PetscInt)total;
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/snapshot.h"
 #include "dmhs/events.h"
+#include "dmhs/gather.h"
 #include "h5check.h"
 #include "h5io.h"
 #include "guard.h"
@@ -30,7 +31,7 @@ static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, 
   static const field_desc rows_field = {"rows", 2, FIELD_INT64, 0, 0, "1"};
   PetscInt64 *og, *pairs, *ask, *all_ask, *answer, my_offset;
   PetscInt *orow, nb = 0, n_ask = 0;
-  PetscMPIInt *counts, *displs, n_mine;
+  size_t n_gathered, my_first;
   hid_t grp;
   PetscFunctionBeginUser;
   *n_bonds = t ? t->n_bonds_global : 0;
@@ -50,16 +51,10 @@ static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, 
     nb++;
   }
   /* every rank's questions, answered by the owners */
-  PetscCall(PetscMalloc2(s->size, &counts, s->size + 1, &displs));
-  n_mine = (PetscMPIInt)n_ask;
-  PetscCallMPI(MPI_Allgather(&n_mine, 1, MPI_INT, counts, 1, MPI_INT, s->comm));
-  displs[0] = 0;
-  for (PetscMPIInt r = 0; r < s->size; r++)
-    displs[r + 1] = displs[r] + counts[r];
-  const PetscInt n_all = displs[s->size];
-  PetscCall(PetscMalloc2(n_all + 1, &all_ask, n_all + 1, &answer));
-  PetscCallMPI(
-      MPI_Allgatherv(ask, n_mine, MPIU_INT64, all_ask, counts, displs, MPIU_INT64, s->comm));
+  PetscCall(gather_all(s->comm, "snapshot bond ends", ask, (size_t)n_ask, sizeof(PetscInt64),
+                       &all_ask, &n_gathered, &my_first));
+  const PetscInt n_all = (PetscInt)n_gathered;
+  PetscCall(PetscMalloc1(n_all + 1, &answer));
   for (PetscInt k = 0; k < n_all; k++) {
     const PetscInt r = topology_lookup_row(og, orow, s->ps.n_owned, all_ask[k]);
     answer[k] = r >= 0 ? offset + r : -1;
@@ -70,7 +65,7 @@ static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, 
     if (pairs[2 * b + 1] >= 0)
       continue;
     const PetscInt k = (PetscInt)(-1 - pairs[2 * b + 1]);
-    pairs[2 * b + 1] = answer[displs[s->rank] + k];
+    pairs[2 * b + 1] = answer[(PetscInt)my_first + k];
     PetscCheck(pairs[2 * b + 1] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "snapshot: a bond names particle gid %" PetscInt64_FMT " that no rank owns", ask[k]);
   }
@@ -83,8 +78,8 @@ static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, 
   PetscCallHDF5(path, grp = H5Gcreate2(fid, "bonds", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, nb, my_offset, n_check, 2));
   PetscCallHDF5(path, H5Gclose(grp));
-  PetscCall(PetscFree2(all_ask, answer));
-  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree(all_ask));
+  PetscCall(PetscFree(answer));
   PetscCall(PetscFree2(pairs, ask));
   PetscCall(PetscFree2(og, orow));
   PetscFunctionReturn(0);

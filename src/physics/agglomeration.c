@@ -19,6 +19,7 @@
 #include "dmhs/agglomeration.h"
 #include "dmhs/bond.h"
 #include "dmhs/checkpoint.h"
+#include "dmhs/gather.h"
 #include "dmhs/integrate.h"
 
 /* ---- counter-based random numbers ---------------------------------------- */
@@ -201,20 +202,13 @@ static int cmp_point(const void *a, const void *b) {
 /* Every rank's points, on every rank, sorted by gid. */
 static PetscErrorCode agg_allgather(sim *s, const agglomeration_point *mine, PetscInt n_mine,
                                     agglomeration_point **all, PetscInt *n_all) {
-  PetscMPIInt *counts, *displs, my = (PetscMPIInt)(n_mine * (PetscInt)sizeof(agglomeration_point));
+  size_t n = 0;
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc2(s->size, &counts, s->size, &displs));
-  PetscCallMPI(MPI_Allgather(&my, 1, MPI_INT, counts, 1, MPI_INT, s->comm));
-  PetscInt64 total = 0;
-  for (PetscMPIInt r = 0; r < s->size; r++) {
-    displs[r] = (PetscMPIInt)total;
-    total += counts[r];
-  }
-  *n_all = (PetscInt)(total / (PetscInt64)sizeof(agglomeration_point));
-  PetscCall(PetscMalloc1(*n_all + 1, all));
-  PetscCallMPI(MPI_Allgatherv(mine, my, MPI_BYTE, *all, counts, displs, MPI_BYTE, s->comm));
-  qsort(*all, (size_t)*n_all, sizeof(agglomeration_point), cmp_point);
-  PetscCall(PetscFree2(counts, displs));
+  *n_all = 0;
+  PetscCall(gather_all(s->comm, "agglomeration points", mine, (size_t)n_mine,
+                       sizeof(agglomeration_point), all, &n, NULL));
+  *n_all = (PetscInt)n;
+  qsort(*all, n, sizeof(agglomeration_point), cmp_point);
   PetscFunctionReturn(0);
 }
 

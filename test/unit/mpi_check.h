@@ -25,7 +25,7 @@ static void agree(const char *where) {
 }
 
 /* The lattice position of particle k, jittered (the same on every rank). */
-static void base_x(PetscInt64 k, double x[2]) {
+static inline void base_x(PetscInt64 k, double x[2]) {
   x[0] = ((double)(k % SIDE) + 0.5) / SIDE + (double)((k * 37) % 11 - 5) * 1e-3;
   x[1] = ((double)(k / SIDE) + 0.5) / SIDE + (double)((k * 53) % 7 - 3) * 1e-3;
 }
