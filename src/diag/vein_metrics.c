@@ -33,6 +33,7 @@
 #include "dmhs/vein_metrics.h"
 #include "dmhs/stress.h"
 #include "dmhs/gather.h"
+#include "dmhs/extreme.h"
 #include "dmhs/checkpoint.h"
 #include "vein_cycle_peaks.h"
 #include "dmhs/csv.h"
@@ -104,10 +105,7 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
   const particles *ps = &s->ps;
   const double dx = v->lay.dx, reach2 = 4 * dx * dx;
   const PetscInt n = v->leaves.n_leaf[0] + v->leaves.n_leaf[1];
-  struct {
-    double value;
-    int gid;
-  } mine = {-1.0, 0}, all;
+  extreme_value mine = EXTREME_NONE, best;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_FLUID || ps->tracer[i] != VEIN_TRACER_SINUS)
@@ -133,16 +131,11 @@ static PetscErrorCode vein_sinus_peak(vein_metrics *v, sim *s, double *peak, Pet
     const PetscInt local = kb - (w ? v->leaves.n_leaf[0] : 0);
     if (local % 2 != v->lay.leaflet[w].sinus_layer || local < 2)
       continue; /* the sinus face, not the clamp */
-    if (ps->stress_mag[i] > mine.value ||
-        (ps->stress_mag[i] == mine.value && ps->gid[i] < mine.gid)) {
-      mine.value = ps->stress_mag[i];
-      mine.gid = (int)ps->gid[i];
-    }
+    extreme_consider(&mine, ps->stress_mag[i], ps->gid[i]);
   }
-  /* MAXLOC keeps the lowest index (here: gid) among equal values */
-  PetscCallMPI(MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE_INT, MPI_MAXLOC, s->comm));
-  *peak = all.value;
-  *gid = all.value >= 0 ? (PetscInt64)all.gid : -1;
+  PetscCall(extreme_max(s->comm, mine, &best));
+  *peak = best.gid >= 0 ? best.value : -1.0;
+  *gid = best.gid;
   PetscFunctionReturn(0);
 }
 

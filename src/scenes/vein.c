@@ -54,6 +54,7 @@
 #include "dmhs/vein_metrics.h"
 #include "dmhs/solid_load.h"
 #include "dmhs/agglomeration.h"
+#include "dmhs/extreme.h"
 #include "solid_strip.h"
 
 #define VEIN_DX_REF 1e-4 /* the published resolution [m] */
@@ -74,32 +75,16 @@ typedef struct {
  * lower gid), skipping gid `skip`; -1 when there is none. */
 static PetscErrorCode vein_extreme_sinus(sim *s, const double *value, int sign, PetscInt64 skip,
                                          PetscInt64 *gid) {
-  struct {
-    double v;
-    PetscInt64 gid;
-  } mine = {-INFINITY, -1}, *all;
+  extreme_value mine = EXTREME_NONE, best;
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < s->ps.n_owned; i++) {
     if (s->ps.type[i] != PTYPE_FLUID || s->ps.tracer[i] != VEIN_TRACER_SINUS ||
         s->ps.gid[i] == skip)
       continue;
-    const double w = sign * value[i];
-    if (w > mine.v || (w == mine.v && s->ps.gid[i] < mine.gid)) {
-      mine.v = w;
-      mine.gid = s->ps.gid[i];
-    }
+    extreme_consider(&mine, sign * value[i], s->ps.gid[i]);
   }
-  PetscCall(PetscMalloc1(s->size, &all));
-  PetscCallMPI(MPI_Allgather(&mine, (PetscMPIInt)sizeof(mine), MPI_BYTE, all,
-                             (PetscMPIInt)sizeof(mine), MPI_BYTE, s->comm));
-  *gid = -1;
-  double best = -INFINITY;
-  for (PetscMPIInt r = 0; r < s->size; r++)
-    if (all[r].gid >= 0 && (all[r].v > best || (all[r].v == best && all[r].gid < *gid))) {
-      best = all[r].v;
-      *gid = all[r].gid;
-    }
-  PetscCall(PetscFree(all));
+  PetscCall(extreme_max(s->comm, mine, &best));
+  *gid = best.gid;
   PetscFunctionReturn(0);
 }
 
