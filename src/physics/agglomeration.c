@@ -11,16 +11,21 @@
  * rank count and across a restart (the clot membership is checkpointed here, the
  * bonds with the topology, the particle types with the particles).
  *
- * clots.csv (rank 0): step,t,clot_particles,clot_bonds,clot_1..clot_n, one row
- * at the seeding and at every event; clot_k counts the particles of seed k's clot. */
+ * clots.csv (rank 0, through csv.h): step,t,clot_particles,clot_bonds,clot_1..clot_n,
+ * one row at the seeding and at every event; clot_k counts the particles of seed k's
+ * clot. A restart appends to the rows its first part wrote (unless it was not seeded
+ * then). */
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/agglomeration.h"
 #include "dmhs/bond.h"
 #include "dmhs/checkpoint.h"
+#include "dmhs/csv.h"
 #include "dmhs/gather.h"
 #include "dmhs/integrate.h"
+
+#define AGG_CSV "clots.csv"
 
 /* ---- counter-based random numbers ---------------------------------------- */
 
@@ -131,7 +136,7 @@ typedef struct {
   PetscInt64 *clot_gid;     /* sorted */
   PetscInt *clot_seed;      /* seed index of each clot particle's clot */
   PetscInt64 restart_event; /* next_event when the run (re)started */
-  FILE *csv;
+  FILE *csv;                /* clots.csv, rank 0 */
 } agg_data;
 
 static int cmp_gid(const void *a, const void *b) {
@@ -244,33 +249,31 @@ static PetscErrorCode agg_seeds_from_points(sim *s, agg_data *d, PetscInt *n, Pe
   PetscFunctionReturn(0);
 }
 
+/* clots.csv through csv.h: the first row opens it; a restart keeps every row its first part
+ * wrote if it was seeded then, else none (the header only). */
 static PetscErrorCode agg_write_row(sim *s, agg_data *d) {
+  char line[128 + 24 * AGGLOMERATION_MAX_SEEDS];
+  size_t n = 0;
   PetscFunctionBeginUser;
   if (s->rank != 0)
     PetscFunctionReturn(0);
   if (!d->csv) {
-    char path[PETSC_MAX_PATH_LEN];
-    /* a restarted run appends to the rows its first part wrote (unless it was not seeded then) */
-    const PetscBool fresh = !s->io.restarted || d->restart_event == 0 ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(io_output_path(s, "clots.csv", path, sizeof(path)));
-    d->csv = fopen(path, fresh ? "w" : "a");
-    PetscCheck(d->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot open %s", path);
-    if (fresh) {
-      fprintf(d->csv, "step,t,clot_particles,clot_bonds");
-      for (PetscInt k = 0; k < d->n_seeds; k++)
-        fprintf(d->csv, ",clot_%" PetscInt_FMT, k + 1);
-      fprintf(d->csv, "\n");
-    }
+    n = (size_t)snprintf(line, sizeof(line), "step,t,clot_particles,clot_bonds");
+    for (PetscInt k = 0; k < d->n_seeds; k++)
+      n += (size_t)snprintf(line + n, sizeof(line) - n, ",clot_%" PetscInt_FMT, k + 1);
+    snprintf(line + n, sizeof(line) - n, "\n");
+    PetscCall(csv_open_keeping(s, AGG_CSV, line, d->restart_event ? INFINITY : -1.0, &d->csv));
   }
   PetscInt count[AGGLOMERATION_MAX_SEEDS] = {0};
   for (PetscInt k = 0; k < d->n_clot; k++)
     count[d->clot_seed[k]]++;
-  int ok = fprintf(d->csv, "%" PetscInt_FMT ",%.8g,%" PetscInt_FMT ",%" PetscInt64_FMT, s->step,
-                   s->t, d->n_clot, s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE]) > 0;
+  n = (size_t)snprintf(line, sizeof(line),
+                       "%" PetscInt_FMT ",%.8g,%" PetscInt_FMT ",%" PetscInt64_FMT, s->step, s->t,
+                       d->n_clot, s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE]);
   for (PetscInt k = 0; k < d->n_seeds; k++)
-    ok = ok && fprintf(d->csv, ",%" PetscInt_FMT, count[k]) > 0;
-  ok = ok && fprintf(d->csv, "\n") > 0 && fflush(d->csv) == 0;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write clots.csv");
+    n += (size_t)snprintf(line + n, sizeof(line) - n, ",%" PetscInt_FMT, count[k]);
+  snprintf(line + n, sizeof(line) - n, "\n");
+  PetscCall(csv_line(d->csv, AGG_CSV, line));
   PetscFunctionReturn(0);
 }
 
@@ -617,8 +620,7 @@ static PetscErrorCode agglomeration_checkpoint_read(module *self, sim *s, checkp
 static PetscErrorCode agglomeration_destroy(module *self) {
   agg_data *d = self->data;
   PetscFunctionBeginUser;
-  if (d->csv)
-    fclose(d->csv);
+  PetscCall(csv_close(&d->csv, AGG_CSV));
   PetscCall(PetscFree2(d->clot_gid, d->clot_seed));
   PetscCall(PetscFree(self->data));
   PetscFunctionReturn(0);
