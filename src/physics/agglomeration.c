@@ -13,8 +13,7 @@
  *
  * clots.csv (rank 0, through csv.h): step,t,clot_particles,clot_bonds,clot_1..clot_n,
  * one row at the seeding and at every event; clot_k counts the particles of seed k's
- * clot. A restart appends to the rows its first part wrote (unless it was not seeded
- * then). */
+ * clot. A restart keeps its rows up to the checkpoint's step. */
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
@@ -133,10 +132,10 @@ typedef struct {
   PetscInt n_seeds;
   PetscInt64 seed_gid[AGGLOMERATION_MAX_SEEDS];
   PetscInt n_clot, n_alloc;
-  PetscInt64 *clot_gid;     /* sorted */
-  PetscInt *clot_seed;      /* seed index of each clot particle's clot */
-  PetscInt64 restart_event; /* next_event when the run (re)started */
-  FILE *csv;                /* clots.csv, rank 0 */
+  PetscInt64 *clot_gid;  /* sorted */
+  PetscInt *clot_seed;   /* seed index of each clot particle's clot */
+  PetscInt restart_step; /* the checkpoint's step (0: a fresh run) */
+  FILE *csv;             /* clots.csv, rank 0 */
 } agg_data;
 
 static int cmp_gid(const void *a, const void *b) {
@@ -249,8 +248,8 @@ static PetscErrorCode agg_seeds_from_points(sim *s, agg_data *d, PetscInt *n, Pe
   PetscFunctionReturn(0);
 }
 
-/* clots.csv through csv.h: the first row opens it; a restart keeps every row its first part
- * wrote if it was seeded then, else none (the header only). */
+/* clots.csv through csv.h: the first row opens it, after a restart keeping the rows up to
+ * the checkpoint's step (its first column is the step). */
 static PetscErrorCode agg_write_row(sim *s, agg_data *d) {
   char line[128 + 24 * AGGLOMERATION_MAX_SEEDS];
   size_t n = 0;
@@ -262,7 +261,7 @@ static PetscErrorCode agg_write_row(sim *s, agg_data *d) {
     for (PetscInt k = 0; k < d->n_seeds; k++)
       n += (size_t)snprintf(line + n, sizeof(line) - n, ",clot_%" PetscInt_FMT, k + 1);
     snprintf(line + n, sizeof(line) - n, "\n");
-    PetscCall(csv_open_keeping(s, AGG_CSV, line, d->restart_event ? INFINITY : -1.0, &d->csv));
+    PetscCall(csv_open_keeping(s, AGG_CSV, line, (double)d->restart_step + 0.5, &d->csv));
   }
   PetscInt count[AGGLOMERATION_MAX_SEEDS] = {0};
   for (PetscInt k = 0; k < d->n_clot; k++)
@@ -597,7 +596,8 @@ static PetscErrorCode agglomeration_checkpoint_read(module *self, sim *s, checkp
              "checkpoint: the agglomeration state counts %" PetscInt64_FMT
              " clot bonds, the topology holds %" PetscInt64_FMT,
              state[3], s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE]);
-  d->next_event = d->restart_event = state[0];
+  d->next_event = state[0];
+  d->restart_step = s->step;                              /* read before the modules' state */
   s->force_rebuild = state[4] ? PETSC_TRUE : PETSC_FALSE; /* written at an event's step */
   d->n_seeds = (PetscInt)state[1];
   if (d->n_seeds)
