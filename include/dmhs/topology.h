@@ -119,12 +119,6 @@ PetscErrorCode topology_add_bonds(topology *t, const particles *ps, MPI_Comm com
  * structure changed. */
 PetscErrorCode topology_remove_bonds(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
                                      const PetscInt64 (*gid)[2], PetscInt type);
-/* Collective: adds angles (i, j centre, k) given on any rank, as topology_add_bonds. */
-PetscErrorCode topology_add_angles(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
-                                   const PetscInt64 (*gid)[3], const PetscInt *type);
-/* Collective: removes the angles with these three gids (i and k in either order). */
-PetscErrorCode topology_remove_angles(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
-                                      const PetscInt64 (*gid)[3]);
 /* Migration (called by migrate.c before the leaving rows go): sends every store entry
  * with an end among the n_leave leaving owned rows to that row's destination rank, and
  * merges the entries that arrive. Collective. */

@@ -25,8 +25,6 @@ PetscErrorCode xdmf_destroy(xdmf **x);
 /* Appends one snapshot (file name relative to the XDMF file). bonds may be NULL. */
 PetscErrorCode xdmf_add(xdmf *x, const char *h5_name, double t, PetscInt64 n,
                         const xdmf_connectivity *bonds);
-/* Drops entries at or after time t (a restart rewrites them). */
-void xdmf_truncate(xdmf *x, double t);
 /* Writes the whole index to path (via path.tmp + rename). */
 PetscErrorCode xdmf_write(const xdmf *x, const char *path);
 /* Rebuilds the index from the snapshot files snap_000000.h5 .. snap_<n-1>.h5 found in dir

@@ -125,39 +125,6 @@ PetscErrorCode topology_add_bonds(topology *t, const particles *ps, MPI_Comm com
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode topology_add_angles(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
-                                   const PetscInt64 (*gid)[3], const PetscInt *type) {
-  topology_msg *mine, *all;
-  PetscInt n_all;
-  PetscInt64 *og;
-  PetscInt *orow;
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(n + 1, &mine));
-  for (PetscInt k = 0; k < n; k++) {
-    PetscCall(topology_check_angle(gid[k], type[k]));
-    mine[k] = (topology_msg){-1, {gid[k][0], gid[k][1], gid[k][2]}, type[k], 0.0};
-  }
-  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
-  PetscCall(topology_owned_lookup(ps, &og, &orow));
-  for (PetscInt k = 0; k < n_all; k++) {
-    const topology_msg *m = &all[k];
-    const PetscInt64 id = t->next_angle_id++;
-    PetscBool mine_here = PETSC_FALSE;
-    t->n_angles_global++;
-    for (int e = 0; e < 3; e++)
-      if (topology_lookup_row(og, orow, ps->n_owned, m->gid[e]) >= 0)
-        mine_here = PETSC_TRUE;
-    if (mine_here)
-      PetscCall(topology_store_angle(t, id, m->gid, (PetscInt)m->type));
-  }
-  if (n_all)
-    t->changed = PETSC_TRUE;
-  PetscCall(PetscFree2(og, orow));
-  PetscCall(PetscFree(all));
-  PetscCall(PetscFree(mine));
-  PetscFunctionReturn(0);
-}
-
 /* Is the store entry with these gids among the gathered removals (sorted)? */
 static PetscBool topology_listed(const topology_msg *all, PetscInt n, const PetscInt64 g[3]) {
   PetscInt lo = 0, hi = n;
@@ -208,40 +175,6 @@ PetscErrorCode topology_remove_bonds(topology *t, const particles *ps, MPI_Comm 
     t->n_bonds_of_type[ty] -= removed[ty];
     t->n_bonds_global -= removed[ty];
   }
-  if (n_all)
-    t->changed = PETSC_TRUE;
-  PetscCall(PetscFree2(og, orow));
-  PetscCall(PetscFree(all));
-  PetscCall(PetscFree(mine));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode topology_remove_angles(topology *t, const particles *ps, MPI_Comm comm, PetscInt n,
-                                      const PetscInt64 (*gid)[3]) {
-  topology_msg *mine, *all;
-  PetscInt n_all, kept = 0, *orow;
-  PetscInt64 *og, removed = 0;
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(n + 1, &mine));
-  for (PetscInt k = 0; k < n; k++) /* the arms in either order: (lower, centre, higher) */
-    mine[k] = (topology_msg){
-        -1, {PetscMin(gid[k][0], gid[k][2]), gid[k][1], PetscMax(gid[k][0], gid[k][2])}, 0, 0.0};
-  PetscCall(topology_gather_sorted(comm, mine, n, &all, &n_all));
-  PetscCall(topology_owned_lookup(ps, &og, &orow));
-  for (PetscInt a = 0; a < t->n_angles; a++) {
-    const PetscInt64 *ag = t->angle_gid[a];
-    const PetscInt64 g[3] = {PetscMin(ag[0], ag[2]), ag[1], PetscMax(ag[0], ag[2])};
-    if (topology_listed(all, n_all, g)) {
-      if (topology_lookup_row(og, orow, ps->n_owned, ag[0]) >= 0)
-        removed++;
-      continue;
-    }
-    topology_move_angle(t, kept++, a);
-  }
-  t->n_angles = kept;
-  t->dirty = PETSC_TRUE;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &removed, 1, MPIU_INT64, MPI_SUM, comm));
-  t->n_angles_global -= removed;
   if (n_all)
     t->changed = PETSC_TRUE;
   PetscCall(PetscFree2(og, orow));

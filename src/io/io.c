@@ -1,5 +1,5 @@
 /* Output, checkpoints, restart and the run record: the glue between the step
- * loop (sim.c) and snapshot.c, xdmf.c, checkpoint.c.
+ * loop (sim_run, src/driver/run.c) and snapshot.c, xdmf.c, checkpoint.c.
  *
  * Signals: SIGTERM, SIGINT and SIGUSR1 (what batch systems, timeout, mpirun and
  * Ctrl-C send) only set a flag (stop_signal.c, which also says when a repeat

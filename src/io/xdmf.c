@@ -74,11 +74,6 @@ PetscErrorCode xdmf_add(xdmf *x, const char *h5_name, double t, PetscInt64 n,
   PetscFunctionReturn(0);
 }
 
-void xdmf_truncate(xdmf *x, double t) {
-  while (x->n > 0 && x->e[x->n - 1].t >= t)
-    x->n--;
-}
-
 static int xdmf_data_item(FILE *f, const char *indent, PetscInt64 rows, int width,
                           const char *number_type, int precision, const char *file,
                           const char *dataset) {
