@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 """The user guide's option tables against the options dmhs registers.
 
-  options_table.py DMHS USER_GUIDE_MD
+  options_table.py DMHS PAGE...
 
 Runs `DMHS -scene S -help` for every scene that `-help` names on its -scene
 line (and the variants that enable a module only on request, VARIANTS below),
 collects every option the listings show (lines '  -name <value> ...'), and
-collects the options the user guide documents: the first cell of every row of
-its option tables (Markdown tables whose first header cell is "option"), every
+collects the options the guide's pages document: the first cell of every row
+of their option tables (Markdown tables whose first header cell is "option"), every
 `-name` in backticks there. Fails (exit 1), naming them, when
  * an option that -help lists is in no option table,
  * an option table lists an option that no -help listing shows (PETSc's own
@@ -58,9 +58,10 @@ def documented(path):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: options_table.py DMHS USER_GUIDE_MD")
-    exe, guide = sys.argv[1:]
+    if len(sys.argv) < 3:
+        sys.exit("usage: options_table.py DMHS PAGE...")
+    exe, pages = sys.argv[1], sys.argv[2:]
+    guide = " ".join(pages)
     base = help_text(exe, [])
     m = re.search(r"^  -scene <[^>]*> +(.*)$", base, re.M)
     if not m:
@@ -75,7 +76,12 @@ def main():
         if not got:
             sys.exit(f"FAIL: {' '.join(args)} -help lists no option")
         code |= got
-    doc, scene_row = documented(guide)
+    doc, scene_row = {}, None
+    for page in pages:
+        found, row = documented(page)
+        for o, lines in found.items():
+            doc.setdefault(o, []).extend(f"{page}:{n}" for n in lines)
+        scene_row = scene_row or row
     missing = sorted(code - set(doc))
     unknown = sorted(o for o in set(doc) - code if o not in petsc)
     ok = True
@@ -87,7 +93,7 @@ def main():
     if unknown:
         ok = False
         print(f"FAIL: in an option table of {guide} but registered by no scene or module: "
-              + ", ".join(f"-{o} (line {', '.join(map(str, doc[o]))})" for o in unknown))
+              + ", ".join(f"-{o} ({', '.join(doc[o])})" for o in unknown))
     if scene_row is None:
         ok = False
         print(f"FAIL: {guide} has no -scene row")
