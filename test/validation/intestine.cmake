@@ -100,7 +100,8 @@ set_tests_properties(validation_intestine_waves_plot PROPERTIES LABELS validatio
 # period, u_P and u_S measured; conservation, the schedule's signs, the bounds
 # as in the quick run; at most 1 % of the liquid (13 particles) lodged in the
 # membrane, none through it. Measured: density 0.62 %, Mach 0.032, none
-# lodged, none through; alpha 0.241, u_F 0.139 cm/s against u_P 0.153 cm/s.
+# lodged, none through; alpha 0.241, u_F 0.139 cm/s against u_P 0.153 cm/s
+# (u_F an upper bound: measured before the front's fix of ba0aeff).
 add_test(NAME validation_intestine_pet_quick
          COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/intestine.py --exe ${DMHS_EXE}
                  --opts ${PROJECT_SOURCE_DIR}/input/intestine-pet-quick.opts --outdir ${DMHS_INTESTINE_OUT}/pet-quick
