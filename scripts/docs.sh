@@ -46,7 +46,17 @@ markdown_extensions:
       slugify: !!python/object/apply:pymdownx.slugs.slugify {kwds: {case: lower}}
 nav:
   - Home: index.md
-  - User guide: doc/user-guide.md
+  - User guide:
+      - Contents: doc/user-guide.md
+      - Building and running: doc/guide/running.md
+      - Options: doc/guide/options.md
+      - Channels and the box: doc/guide/channels.md
+      - Solids, cantilever, flap: doc/guide/solids.md
+      - Intestine: doc/guide/scene-intestine.md
+      - Vein: doc/guide/scene-vein.md
+      - Clots: doc/guide/clots.md
+      - Output, checkpoints, restart: doc/guide/output.md
+      - Errors: doc/guide/errors.md
   - Reproducing the thesis: doc/reproduction.md
   - Cases: doc/cases.md
   - Validation: doc/validation.md

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What a run is doing, from its output directory's run.json (doc/user-guide.md, "run.json"):
+# What a run is doing, from its output directory's run.json (doc/guide/output.md, "run.json"):
 #
 #   scripts/run_state.sh DIR...          # one line per directory, e.g.
 #       output/vein: running (step 812000, t = 0.406 s; heartbeat 2026-12-05T14:32:10Z, 95 s ago;

@@ -3,7 +3,7 @@
  * that no liquid crosses a leaflet, every crossing_interval steps and at output
  * times; "vein" (src/diag/vein_metrics.c), at output times, owning
  * <output_dir>/vein.csv, vein-sinus.csv and vein-summary.csv and the
- * measurement point (doc/user-guide.md, "Scene vein"; definitions in
+ * measurement point (doc/guide/scene-vein.md, "Outputs and plots"; definitions in
  * doc/theory.md, "Vein metrics"). */
 #ifndef DMHS_VEIN_METRICS_H
 #define DMHS_VEIN_METRICS_H

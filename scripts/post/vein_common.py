@@ -1,4 +1,4 @@
-"""Readers shared by the plot_vein_*.py scripts (scene vein, doc/user-guide.md).
+"""Readers shared by the plot_vein_*.py scripts (scene vein, doc/guide/scene-vein.md).
 
   read_csv(path, need)       vein.csv / vein-sinus.csv: columns as float arrays (an
                              empty cell is NaN), and the '# vein: ...' comment as a dict

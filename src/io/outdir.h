@@ -1,5 +1,5 @@
 /* What a run removes from its output directory before writing (private to
- * src/io; the policy is in doc/user-guide.md, "Output directory"):
+ * src/io; the policy is in doc/guide/output.md, "Output directory"):
  *   - every run: stale <name>.tmp files, left by a write that was interrupted
  *     (killed, disk full): they are never complete;
  *   - a fresh run (no -restart): the snapshots snap_NNNNNN.h5 and

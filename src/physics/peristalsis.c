@@ -16,7 +16,7 @@
  * 3u^2 - 2u^3 over the first -peristalsis_ramp fraction of each sub-period
  * (an abrupt switch would fling the membrane faster than the sound speed).
  * A static segment then lifts by about F/k_s at its centre (less the bonds'
- * tension and the liquid's weight): the calibration note in doc/user-guide.md.
+ * tension and the liquid's weight): the calibration note in doc/guide/scene-intestine.md.
  * The state (current sub-period) is a function of t alone, so restarts need
  * no private checkpoint data. */
 #include <math.h>

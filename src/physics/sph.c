@@ -129,7 +129,7 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       "Continuity: the forces see the density predicted for the end of the step, rho + dt "
       "drho, corrected to the trapezoid after them, instead of the half-step rho + dt/2 drho, "
       "which amplifies pressure oscillations at a rate omega^2 dt/4 (doc/theory.md; default "
-      "true in the vein, else false)",
+      "true in the intestine and the vein, else false)",
       NULL, sp->density_predict, &sp->density_predict, NULL));
   PetscOptionsEnd();
   PetscCheck(sp->delta >= 0 && sp->delta <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,

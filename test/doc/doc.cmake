@@ -1,10 +1,12 @@
 # The documentation against the code. Label: doc.
-# doc_options_table: every option that `dmhs -scene S -help` lists, for every
-# scene, is in an option table of doc/user-guide.md, and the tables list no
-# option that the code does not register (test/doc/options_table.py).
+# doc_options_table: the option tables of the guide's pages (doc/guide/*.md,
+# marker sections generated from `dmhs -scene S -help`) are what -help gives
+# now, and every option that -help lists for some scene is in one
+# (test/doc/options_table.py; --write regenerates them).
+file(GLOB DMHS_GUIDE_PAGES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/doc/guide/*.md)
 add_test(NAME doc_options_table
          COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/options_table.py ${DMHS_EXE}
-                 ${PROJECT_SOURCE_DIR}/doc/user-guide.md)
+                 ${DMHS_GUIDE_PAGES})
 set_tests_properties(doc_options_table PROPERTIES LABELS doc TIMEOUT 60)
 # format_check: every C source and header under src, include, test and bench
 # keeps the committed .clang-format (test/doc/format_check.sh; skipped when

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The output-directory policy (doc/user-guide.md, "Output directory"):
+# The output-directory policy (doc/guide/output.md, "Output directory"):
 #  1. a fresh run into a directory an earlier, longer run used removes that
 #     run's snapshots and particles.xdmf: only its own remain;
 #  2. stale *.tmp files (interrupted writes) are removed by the next run;

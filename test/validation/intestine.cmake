@@ -99,8 +99,9 @@ set_tests_properties(validation_intestine_waves_plot PROPERTIES LABELS validatio
 # full): the study's wave speed and lift over one whole wave; alpha after one
 # period, u_P and u_S measured; conservation, the schedule's signs, the bounds
 # as in the quick run; at most 1 % of the liquid (13 particles) lodged in the
-# membrane, none through it. Measured: density 0.62 %, Mach 0.032, none
-# lodged, none through; alpha 0.241, u_F 0.139 cm/s against u_P 0.153 cm/s.
+# membrane, none through it. Measured (2026-12-06): density 0.62 %, Mach
+# 0.033, none lodged, none through; alpha 0.234, u_F 0.080 cm/s against u_P
+# 0.148 cm/s.
 add_test(NAME validation_intestine_pet_quick
          COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/intestine.py --exe ${DMHS_EXE}
                  --opts ${PROJECT_SOURCE_DIR}/input/intestine-pet-quick.opts --outdir ${DMHS_INTESTINE_OUT}/pet-quick

@@ -58,6 +58,11 @@ add_test(NAME validation_vein_plot_probe
 add_test(NAME validation_vein_plot_geometry
          COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/plot_vein_geometry.py ${DMHS_VEIN_OUT}/quick
                  --out ${DMHS_VEIN_PLOTS}/vein_geometry.png)
+# the upper leaflet against a static cantilever under the liquid's pressure difference
+add_test(NAME validation_vein_beam
+         COMMAND ${DMHS_PYTHON} ${DMHS_VEIN_POST}/vein_beam.py ${DMHS_VEIN_OUT}/quick --check)
+set_tests_properties(validation_vein_beam PROPERTIES LABELS validation TIMEOUT 120
+                     FIXTURES_REQUIRED vein_quick)
 foreach(p fields sinus probe geometry)
   set_tests_properties(validation_vein_plot_${p} PROPERTIES LABELS validation TIMEOUT 120
                        FIXTURES_REQUIRED "vein_quick;vein_plots_clean" FIXTURES_SETUP vein_plots)
