@@ -33,10 +33,15 @@ typedef struct module module;
 struct module {
   const char *name;
   unsigned needs;
-  /* Its forces act between solid particles and depend on their positions
-   * only (bonds, angles): with -solid_substeps they are evaluated on every
-   * solid sub-step, and its time-step limits bound the sub-step. */
+  /* Its forces depend on positions only and are evaluated on every solid
+   * sub-step with -solid_substeps (bonds, angles; the repulsion with
+   * -repulsion_substeps), and its time-step limits bound the sub-step. */
   PetscBool solid_internal;
+  /* Optional, for a solid_internal module whose forces reach beyond the solids
+   * (the repulsion's liquid in contact): sets mark[i] = 1 on the owned rows
+   * that must move on this step's sub-steps with the solids, from the state at
+   * the start of the step. Called before the step's first kick. */
+  PetscErrorCode (*substep_members)(module *self, struct sim *s, PetscInt *mark);
   double reach; /* longest interaction distance [m]; sets the ghost width */
   /* NULL-terminated names of the ghost fields its sweeps read on ghost rows (beyond the
    * FIELD_FIXED ones, which ghosts keep from their build): between builds a step refreshes

@@ -53,6 +53,7 @@ typedef struct particles {
   PetscInt *side;                 /* vein: side of a leaflet, +-1 upper, +-2 lower, 0 none */
   double (*a_hold)[DMHS_DIM]; /* -solid_substeps: the solid's acceleration from everything but its
                                  own bonds and angles, held over the sub-steps [m/s^2] */
+  PetscInt *substepped;       /* -solid_substeps: 1 = moves on this step's sub-steps */
   double *drho_prev; /* -sph_density_predict: drho^n over the step, for the corrector [kg/m^3/s] */
 } particles;
 

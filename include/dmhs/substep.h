@@ -6,14 +6,22 @@
  * (liquid pressure and viscosity, repulsion, loads, peristalsis, damping) is
  * held at its value from the force evaluation at the start of the step
  * (a_hold). The liquid sees the solids' velocity predicted for the end of the
- * step (v_est), as it sees its own; with N = 1 the step is the plain one. */
+ * step (v_est), as it sees its own; with N = 1 the step is the plain one.
+ * With -repulsion_substeps the solid-liquid and solid-wall contact is a
+ * sub-cycled force too, and the liquid particles in contact move on the
+ * sub-steps with the solids (multi-rate): the stiff contact then bounds the
+ * sub-step instead of the liquid's step. */
 #ifndef DMHS_SUBSTEP_H
 #define DMHS_SUBSTEP_H
 #include <petscsys.h>
 
 struct sim;
 
-/* After the liquid's first kick and drift: the solids' N sub-steps. */
+/* Before the step's first kick: marks the rows that move on its sub-steps
+ * (particles.substepped): the solids, and what the sub-cycled modules add
+ * (module.substep_members). */
+PetscErrorCode substep_mark_members(struct sim *s);
+/* After the liquid's first kick and drift: the marked rows' N sub-steps. */
 PetscErrorCode substep_solids(struct sim *s);
 /* The force evaluation when sub-cycling: the solid_internal modules first,
  * whose share of the solids' acceleration is kept apart, then the others;

@@ -52,6 +52,10 @@ typedef struct timestep {
   PetscInt substeps_option; /* -solid_substeps: 1 = off, 0 = automatic */
   PetscBool subcycling;     /* substeps_option != 1 */
   PetscInt n_sub;           /* sub-steps of the current step */
+  /* -solid_substeps_scheme: how the forces that are not sub-cycled act on the rows that move
+   * on the sub-steps: half at each end of the step (r-RESPA) or held at their start-of-step
+   * value on every sub-step */
+  PetscBool respa;
 } timestep;
 
 /* -dt, -dt_safety, -dt_growth, -dt_min, -solid_substeps. */

@@ -65,6 +65,10 @@ static const field_desc table[] = {
     /* optional (-solid_substeps): set by the force evaluation, used by the
      * next step's sub-steps; checkpointed so a restart continues them */
     ROW(a_hold, DMHS_DIM, FIELD_REAL, FIELD_MIGRATE | FIELD_CHECKPOINT | FIELD_OPTIONAL, "m/s^2"),
+    /* optional (-solid_substeps): 1 on the rows that move on the sub-steps (the solids, and the
+     * liquid in a sub-cycled contact), marked at the start of every step; migrates, as the
+     * step's second kick (after a rebuild) reads it; a step never spans a checkpoint */
+    ROW(substepped, 1, FIELD_INT, FIELD_MIGRATE | FIELD_OPTIONAL, "1"),
     /* optional (-sph_density_predict): the step's first density rate, set in the
      * first half step and used in the second; a step never spans a checkpoint */
     ROW(drho_prev, 1, FIELD_REAL, FIELD_MIGRATE | FIELD_OPTIONAL, "kg/m^3/s"),

@@ -83,16 +83,17 @@ static void integrate_density_mode(const sim *s, int *continuity, int *predict) 
 }
 
 /* The first kick and the drift over the rows' components; subcycled (a constant) freezes the
- * solids (their motion belongs to the sub-steps). Selects instead of branches, so that the loop
- * vectorises: a wall keeps its prescribed velocity (v_est = v) and drifts; a frozen solid keeps
- * x, v and v_est (its density belongs to the liquid's step). */
+ * rows marked substepped (the solids, and the liquid in a sub-cycled contact: their motion
+ * belongs to the sub-steps). Selects instead of branches, so that the loop vectorises: a wall
+ * keeps its prescribed velocity (v_est = v) and drifts; a frozen row keeps x, v and v_est (its
+ * density belongs to the liquid's step). */
 static inline void integrate_kick_drift(particles *ps, double dt, double half, int subcycled) {
-  const PetscInt *restrict type = ps->type;
+  const PetscInt *restrict type = ps->type, *restrict sub = ps->substepped;
   double *restrict x = &ps->x[0][0], *restrict v = &ps->v[0][0], *restrict v_est = &ps->v_est[0][0];
   const double *restrict a = &ps->a[0][0];
   for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
     const PetscInt t = type[j / DMHS_DIM];
-    const int wall = t == PTYPE_WALL, frozen = subcycled && t == PTYPE_SOLID;
+    const int wall = t == PTYPE_WALL, frozen = subcycled ? sub[j / DMHS_DIM] != 0 : 0;
     const double vj = v[j], v_new = wall || frozen ? vj : vj + half * a[j];
     const double est = wall ? vj : vj + dt * a[j];
     v_est[j] = frozen ? v_est[j] : est;
@@ -106,7 +107,7 @@ PetscErrorCode integrate_first_half(sim *s) {
   const double dt = s->dt, half = 0.5 * s->dt;
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
-  const int subcycled = s->ts.subcycling; /* solids move in substep_solids */
+  const int subcycled = s->ts.subcycling; /* marked rows move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
   if (subcycled)
@@ -127,15 +128,20 @@ static inline unsigned not_finite(double x) {
   return (u & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL;
 }
 
-/* The second kick over the rows' components: v += h a, h = dt/2 (a sub-cycled solid's: the
- * last sub-step's dt/2 n_sub), walls untouched; selects instead of branches, so that the loop
- * vectorises. With check (a constant), also the state check's test of x, v and a on what it
- * leaves (integrate_state_ok), while the values are at hand; returns nonzero on a bad one. */
+/* The second kick over the rows' components: v += h a, h = dt/2 (with subcycled, a constant, a
+ * row that moved on the sub-steps: the last sub-step's dt/2 n_sub), walls untouched; selects
+ * instead of branches, so that the loop vectorises. With check (a constant), also the state
+ * check's test of x, v and a on what it leaves (integrate_state_ok), while the values are at
+ * hand; returns nonzero on a bad one. */
 static inline unsigned integrate_kick_components(const sim *s, double half, double half_solid,
-                                                 int check) {
+                                                 int subcycled, int check) {
   const particles *ps = &s->ps;
-  const PetscInt *restrict type = ps->type;
+  const PetscInt *restrict type = ps->type, *restrict sub = ps->substepped;
   const double *restrict x = &ps->x[0][0], *restrict a = &ps->a[0][0];
+  /* respa: the forces not sub-cycled (a_hold) kick a row that moved on the sub-steps over
+   * dt/2 here, half_solid of it with the rest of a */
+  const double *restrict a_hold = subcycled ? &ps->a_hold[0][0] : NULL;
+  const double rest = subcycled && s->ts.respa ? half - half_solid : 0.0;
   double *restrict v = &ps->v[0][0];
   double lo[DMHS_DIM], hi[DMHS_DIM];
   for (int k = 0; k < DMHS_DIM; k++) { /* periodic directions wrap at the next build */
@@ -146,9 +152,12 @@ static inline unsigned integrate_kick_components(const sim *s, double half, doub
   unsigned bad = 0;
   for (PetscInt j = 0; j < DMHS_DIM * ps->n_owned; j++) { /* j: row j / DMHS_DIM, component */
     const PetscInt t = type[j / DMHS_DIM];
-    const double h = t == PTYPE_SOLID ? half_solid : half;
+    const int moved = subcycled && sub[j / DMHS_DIM];
+    const double h = moved ? half_solid : half;
     const double vj = v[j], aj = a[j];
-    const double v_new = t == PTYPE_WALL ? vj : vj + h * aj;
+    double v_new = t == PTYPE_WALL ? vj : vj + h * aj;
+    if (subcycled)
+      v_new = moved && rest != 0.0 ? v_new + rest * a_hold[j] : v_new;
     v[j] = v_new;
     if (check) {
       const double xj = x[j];
@@ -191,7 +200,10 @@ PetscErrorCode integrate_second_half(sim *s) {
   const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  (void)integrate_kick_components(s, half, half_solid, 0);
+  if (s->ts.subcycling)
+    (void)integrate_kick_components(s, half, half_solid, 1, 0);
+  else
+    (void)integrate_kick_components(s, half, half_solid, 0, 0);
   if (continuity)
     (void)integrate_density_rows(ps, s->dt, predict ? 2 : 1, 0);
   PetscCall(PetscLogEventEnd(events.integrate, 0, 0, 0, 0));
@@ -240,7 +252,8 @@ PetscErrorCode integrate_second_half_checked(sim *s) {
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  unsigned bad = integrate_kick_components(s, half, half_solid, 1);
+  unsigned bad = s->ts.subcycling ? integrate_kick_components(s, half, half_solid, 1, 1)
+                                  : integrate_kick_components(s, half, half_solid, 0, 1);
   if (!continuity) /* each density mode its own loop */
     bad |= integrate_density_rows(ps, s->dt, 0, 1);
   else if (!predict)

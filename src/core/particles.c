@@ -116,6 +116,8 @@ void particles_retire(particles *ps, PetscInt i, const double x_rest[DMHS_DIM], 
     if (ps->a_hold)
       ps->a_hold[i][d] = 0;
   }
+  if (ps->substepped)
+    ps->substepped[i] = 0;
   ps->rho[i] = rho_rest;
   if (ps->drho)
     ps->drho[i] = 0;

@@ -1,6 +1,7 @@
 /* Solid sub-cycling (see substep.h). Bitwise rank invariant like the step it
- * refines: the sub-steps touch owned solid rows only, and the ghosts' positions
- * are refreshed before every evaluation of the bonds and angles. */
+ * refines: the sub-steps touch owned rows that move on them only (marked at the
+ * step's start from the state alone), and the ghosts' positions are refreshed
+ * before every evaluation of the sub-cycled forces. */
 #include "dmhs/sim.h"
 #include "dmhs/substep.h"
 #include "dmhs/halo.h"
@@ -25,23 +26,39 @@ static PetscErrorCode substep_internal_forces(sim *s) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode substep_mark_members(sim *s) {
+  particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ps->n_owned; i++)
+    ps->substepped[i] = ps->type[i] == PTYPE_SOLID;
+  for (int m = 0; m < s->n_modules; m++)
+    if (s->modules[m]->solid_internal && s->modules[m]->substep_members)
+      PetscCall(s->modules[m]->substep_members(s->modules[m], s, ps->substepped));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode substep_solids(sim *s) {
   particles *ps = &s->ps;
+  const PetscInt *moves = ps->substepped;
   static const char *const positions[] = {"x"};
   const PetscInt n = s->ts.n_sub;
-  const double h = s->dt / (double)n, half = 0.5 * h;
+  const double h = s->dt / (double)n, half = 0.5 * h, half_dt = 0.5 * s->dt;
+  /* with one sub-step both schemes are the plain step, written as it is */
+  const int respa = s->ts.respa && n > 1;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.substeps, 0, 0, 0, 0));
-  /* first half kick with the whole acceleration of the last evaluation */
+  /* first half kick: the sub-cycled share of the last evaluation over h/2 and, with respa,
+   * the rest (a_hold) over dt/2; held: the whole acceleration over h/2 */
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID)
+    if (!moves[i])
       continue;
     for (int k = 0; k < DMHS_DIM; k++)
-      ps->v[i][k] += half * ps->a[i][k];
+      ps->v[i][k] += respa ? half_dt * ps->a_hold[i][k] + half * (ps->a[i][k] - ps->a_hold[i][k])
+                           : half * ps->a[i][k];
   }
   for (PetscInt sub = 0; sub < n; sub++) {
     for (PetscInt i = 0; i < ps->n_owned; i++) {
-      if (ps->type[i] != PTYPE_SOLID)
+      if (!moves[i])
         continue;
       for (int k = 0; k < DMHS_DIM; k++)
         ps->x[i][k] += h * ps->v[i][k];
@@ -50,23 +67,27 @@ PetscErrorCode substep_solids(sim *s) {
       break; /* the step's force evaluation gives the last one */
     PetscCall(halo_forward(&s->hal, ps, positions, 1));
     PetscCall(substep_internal_forces(s));
-    /* the second half kick of this sub-step and the first of the next */
+    /* the second half kick of this sub-step and the first of the next: the sub-cycled
+     * forces, and held, the rest too */
     for (PetscInt i = 0; i < ps->n_owned; i++) {
-      if (ps->type[i] != PTYPE_SOLID)
+      if (!moves[i])
         continue;
       for (int k = 0; k < DMHS_DIM; k++)
-        ps->v[i][k] += h * (ps->a_hold[i][k] + ps->a[i][k]);
+        ps->v[i][k] += respa ? h * ps->a[i][k] : h * (ps->a_hold[i][k] + ps->a[i][k]);
     }
   }
   /* the liquid sees the solid's velocity predicted for the end of the step, as
    * its own (integrate_first_half): the last sub-step's half-kicked velocity
-   * plus the other half with the acceleration it started from. With one
-   * sub-step that is v^n + dt a^n, the plain step's. */
+   * plus the kicks still to come with the accelerations at hand (respa: the
+   * sub-cycled share over h/2, the rest over dt/2). With one sub-step that is
+   * v^n + dt a^n, the plain step's. */
   for (PetscInt i = 0; i < ps->n_owned; i++) {
-    if (ps->type[i] != PTYPE_SOLID)
+    if (!moves[i])
       continue;
     for (int k = 0; k < DMHS_DIM; k++)
-      ps->v_est[i][k] = ps->v[i][k] + half * (n > 1 ? ps->a_hold[i][k] + ps->a[i][k] : ps->a[i][k]);
+      ps->v_est[i][k] =
+          ps->v[i][k] + (respa ? half * ps->a[i][k] + half_dt * ps->a_hold[i][k]
+                               : half * (n > 1 ? ps->a_hold[i][k] + ps->a[i][k] : ps->a[i][k]));
   }
   PetscCall(PetscLogEventEnd(events.substeps, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -222,8 +222,17 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   /* scene options (they set module defaults and enable modules), then modules' own */
   PetscCall(registry_create_scene(scene_name, &s->scn));
   PetscCall(s->scn->set_from_options(s->scn, s));
-  for (int m = 0; m < s->n_modules; m++)
-    PetscCall(s->modules[m]->set_from_options(s->modules[m], s));
+  for (int m = 0; m < s->n_modules; m++) {
+    const module *mod = s->modules[m];
+    PetscCall(mod->set_from_options(s->modules[m], s));
+    /* a module that moves more than the solids on the sub-steps (by its option -<name>_substeps)
+     * means nothing without them */
+    PetscCheck(!mod->substep_members || !mod->solid_internal || s->ts.subcycling, s->comm,
+               PETSC_ERR_ARG_INCOMP,
+               "-%s_substeps runs the %s on the solid sub-steps, but there are none "
+               "(-solid_substeps 1): give -solid_substeps 0 (automatic) or N > 1",
+               mod->name, mod->name);
+  }
   PetscCall(sim_check_unused_options(s));
 
   PetscCall(sim_prepare_output_dir(s));
@@ -320,6 +329,8 @@ PetscErrorCode sim_run(sim *s) {
   /* stop at the step nearest t_end */
   while (!stop && s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
+    if (s->ts.subcycling)
+      PetscCall(substep_mark_members(s)); /* the rows that move on the sub-steps */
     PetscCall(integrate_first_half(s));
     if (s->ts.subcycling)
       PetscCall(substep_solids(s)); /* the solids' sub-steps */

@@ -9,12 +9,17 @@
 #include "dmhs/events.h"
 #include "dmhs/fields.h"
 
+typedef enum { SUBSTEP_RESPA, SUBSTEP_HELD } substep_scheme;
+static const char *const substep_scheme_names[] = {"respa", "held", "substep_scheme", "SUBSTEP_",
+                                                   NULL};
+
 PetscErrorCode timestep_set_from_options(sim *s) {
   timestep *ts = &s->ts;
   PetscBool safety_set, growth_set, min_set;
   PetscFunctionBeginUser;
   ts->substeps_option = 1;
   ts->n_sub = 1;
+  ts->respa = PETSC_FALSE;
   ts->safety = DT_SAFETY_DEFAULT;
   ts->growth = DT_GROWTH_DEFAULT;
   ts->dt_min = 0;
@@ -38,6 +43,15 @@ PetscErrorCode timestep_set_from_options(sim *s) {
                             "Sub-steps of the solids' bonds and angles per step [1] (1 = off, 0 = "
                             "automatic from the ratio of the liquid's to the solids' limits)",
                             NULL, ts->substeps_option, &ts->substeps_option, NULL));
+  substep_scheme scheme = ts->respa ? SUBSTEP_RESPA : SUBSTEP_HELD;
+  PetscCall(PetscOptionsEnum(
+      "-solid_substeps_scheme",
+      "With sub-steps: how the forces not sub-cycled (the liquid's, loads) act on the rows that "
+      "move on them [1]: respa (half a step's worth at each end of the step, as the liquid's "
+      "own kicks: time-reversible, r-RESPA) or held (their start-of-step value on every "
+      "sub-step, as SPHinXsys)",
+      NULL, substep_scheme_names, (PetscEnum)scheme, (PetscEnum *)&scheme, NULL));
+  ts->respa = scheme == SUBSTEP_RESPA ? PETSC_TRUE : PETSC_FALSE;
   PetscOptionsEnd();
   PetscCheck(ts->substeps_option >= 0 && ts->substeps_option <= SUBSTEPS_MAX, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
@@ -45,8 +59,10 @@ PetscErrorCode timestep_set_from_options(sim *s) {
              SUBSTEPS_MAX, ts->substeps_option);
   ts->subcycling = ts->substeps_option != 1 ? PETSC_TRUE : PETSC_FALSE;
   /* the held acceleration is a particle field: it must exist before the scene builds */
-  if (ts->subcycling)
+  if (ts->subcycling) {
     PetscCall(fields_enable("a_hold"));
+    PetscCall(fields_enable("substepped"));
+  }
   PetscCheck(s->dt >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-dt must be >= 0 (got %g; 0 = automatic)", s->dt);
   PetscCheck(ts->safety > 0 && ts->safety <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -10,7 +10,13 @@
  * Pair arithmetic in repulsion_iact.h; the (4, 2) and (12, 6) sweeps are
  * specialised (integer powers unrolled), others use a generic sweep.
  * Time-step limit: stiffness at r*, k = K (p1 - p2)/r*^2, on the reduced mass
- * of the lightest fluid and solid particles: 0.2 sqrt(mu/k). */
+ * of the lightest fluid and solid particles: 0.2 sqrt(mu/k).
+ * With -repulsion_substeps (and -solid_substeps other than 1) the contact is
+ * evaluated on the solid sub-steps, and the liquid particles within
+ * r* + skin/4 of a solid or wall at the start of a step move on them too
+ * (substep_members): its limit then bounds the sub-step, not the liquid's step.
+ * The margin beyond r* is many times what a pair closes in one step, so a
+ * particle that reaches r* during a step was already marked at its start. */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/bond.h"
@@ -25,9 +31,10 @@
 typedef struct {
   double K, rstar;
   PetscInt p1, p2;
-  PetscBool bodies; /* also between different solid bodies */
-  double r2_min;    /* closest approach of a repelling pair at the last compute [m^2] (inf: none) */
-  double m_min[2];  /* lightest liquid and solid particle [kg] (masses never change) */
+  PetscBool bodies;   /* also between different solid bodies */
+  PetscBool substeps; /* evaluated on the solid sub-steps (multi-rate contact) */
+  double r2_min;   /* closest approach of a repelling pair at the last compute [m^2] (inf: none) */
+  double m_min[2]; /* lightest liquid and solid particle [kg] (masses never change) */
   PetscBool have_masses;
   /* the pairs that can repel before the next build: indices into the pair list, in its
    * order (the same sums), filtered at each build (repulsion_filter) */
@@ -71,7 +78,14 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
       "-repulsion_bodies",
       "Also repel non-fluid particles of different solid bodies (scenes that number bodies)", NULL,
       d->bodies, &d->bodies, NULL));
+  PetscCall(PetscOptionsBool(
+      "-repulsion_substeps",
+      "With -solid_substeps other than 1: evaluate the repulsion on the solid sub-steps and move "
+      "the liquid particles in contact on them (multi-rate contact: its limit bounds the "
+      "sub-step, not the step)",
+      NULL, d->substeps, &d->substeps, NULL));
   PetscOptionsEnd();
+  self->solid_internal = d->substeps;
   PetscCheck(!d->bodies || fields_enabled("body"), s->comm, PETSC_ERR_ARG_INCOMP,
              "-repulsion_bodies: scene '%s' does not number its solid bodies", s->scn->name);
   PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)",
@@ -143,12 +157,19 @@ static double sweep_12_6(const repulsion_args *A) {
   return repulsion_sweep(12, 6, A);
 }
 
+/* The margin of substep_members beyond r*, as a fraction of the skin */
+#define REPULSION_MEMBER_MARGIN 0.25
+
 /* Once per build: the listed pairs that repel (types and bodies change only at a build) and
- * lay within r* + skin. Between builds every particle moves less than half the skin (else a
- * rebuild), so no other pair comes within r*. */
+ * lay within r* + skin. Between builds every particle moves less than half the skin from
+ * where the build saw it (else a rebuild), so no other pair comes within r*. With sub-steps,
+ * within r* + (2 + margin) skin: the filter may run after the build (a restart's first step),
+ * and every pair within r* + margin skin at any later step before the next build must be
+ * in it, so that the marked rows do not depend on when it ran. */
 static PetscErrorCode repulsion_filter(repulsion_data *d, sim *s) {
   const particles *ps = &s->ps;
-  const double reach = d->rstar + s->skin, reach2 = reach * reach;
+  const double reach = d->rstar + (d->substeps ? 2.0 + REPULSION_MEMBER_MARGIN : 1.0) * s->skin,
+               reach2 = reach * reach;
   PetscFunctionBeginUser;
   if (s->cel.n_pairs > d->n_alloc_sub) {
     PetscCall(PetscFree(d->sub));
@@ -192,6 +213,29 @@ static PetscErrorCode repulsion_compute(module *self, sim *s) {
     d->r2_min = repulsion_sweep((int)d->p1, (int)d->p2, &A); /* generic: loop powers */
   PetscCall(PetscLogFlops(10.0 * (double)d->n_sub)); /* r^2 and its test; ~20 more inside r* */
   PetscCall(PetscLogEventEnd(events.repulsion, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The owned liquid rows with a repelling partner within r* + margin skin now: their motion
+ * belongs to the sub-steps (the walls' and solids' partners alike; solids are marked already). */
+static PetscErrorCode repulsion_substep_members(module *self, sim *s, PetscInt *mark) {
+  repulsion_data *d = self->data;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  if (d->sub_generation != s->cel.generation)
+    PetscCall(repulsion_filter(d, s));
+  const double r_m = d->rstar + REPULSION_MEMBER_MARGIN * s->skin, r_m2 = r_m * r_m;
+  const PetscInt *pi = s->cel.pair_i, *pj = s->cel.pair_j, n_owned = ps->n_owned;
+  for (PetscInt q = 0; q < d->n_sub; q++) {
+    const PetscInt k = d->sub[q], i = pi[k], j = pj[k];
+    const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
+    if (dx * dx + dy * dy >= r_m2)
+      continue;
+    if (i < n_owned && (ps->type[i] == PTYPE_FLUID || ps->type[i] == PTYPE_CLOT))
+      mark[i] = 1;
+    if (j < n_owned && (ps->type[j] == PTYPE_FLUID || ps->type[j] == PTYPE_CLOT))
+      mark[j] = 1;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -282,8 +326,10 @@ static PetscErrorCode repulsion_view(module *self, sim *s, PetscViewer v) {
   PetscCall(PetscViewerASCIIPrintf(
       v,
       "repulsion: solid/wall-fluid%s, K = %g J, r* = %g m, p1 = %" PetscInt_FMT
-      ", p2 = %" PetscInt_FMT "\n",
-      d->bodies ? " and between solid bodies" : "", d->K, d->rstar, d->p1, d->p2));
+      ", p2 = %" PetscInt_FMT "%s\n",
+      d->bodies ? " and between solid bodies" : "", d->K, d->rstar, d->p1, d->p2,
+      d->substeps ? "; on the solid sub-steps, with the liquid in contact (-repulsion_substeps)"
+                  : ""));
   PetscFunctionReturn(0);
 }
 
@@ -325,6 +371,7 @@ PetscErrorCode repulsion_module_create(module **m) {
   (*m)->set_from_options = repulsion_set_from_options;
   (*m)->compute = repulsion_compute;
   (*m)->max_dt = repulsion_max_dt;
+  (*m)->substep_members = repulsion_substep_members;
   (*m)->view = repulsion_view;
   (*m)->destroy = repulsion_destroy;
   (*m)->energy = repulsion_energy_sum;

@@ -254,3 +254,7 @@ dmhs_cli_fail(cli_sph_bad_av_beta "-sph_av_beta must be >= 0 \\(got -1"
   -scene box -sph_av_beta -1 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/sph-bad-beta)
 dmhs_cli_fail(cli_repulsion_bad_p1 "-repulsion_p1 must lie in \\[3, 24\\] .*got 2\\)"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -repulsion_p1 2 -repulsion_p2 2 -output_dir ${DMHS_CLI_OUT}/repulsion-bad-p1)
+dmhs_cli_fail(cli_repulsion_substeps_without_substeps "-repulsion_substeps runs the repulsion on the solid sub-steps, but there are none \\(-solid_substeps 1\\)"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -repulsion_substeps -output_dir ${DMHS_CLI_OUT}/repulsion-substeps-alone)
+dmhs_cli_fail(cli_solid_substeps_bad_scheme "-solid_substeps_scheme middle: unknown value; -solid_substeps_scheme takes one of respa, held"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -solid_substeps 0 -solid_substeps_scheme middle -output_dir ${DMHS_CLI_OUT}/substeps-bad-scheme)

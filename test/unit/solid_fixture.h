@@ -82,12 +82,16 @@ static inline void fixture_substeps(sim *s, PetscInt n) {
   s->ts.substeps_option = s->ts.n_sub = n;
   s->ts.subcycling = n != 1 ? PETSC_TRUE : PETSC_FALSE;
   fields_reset();
-  if (s->ts.subcycling)
+  if (s->ts.subcycling) {
     OK(fields_enable("a_hold"));
+    OK(fields_enable("substepped"));
+  }
 }
 
 /* One step as sim_run takes it (fixed dt, no migration). */
 static inline void fixture_step(sim *s) {
+  if (s->ts.subcycling)
+    OK(substep_mark_members(s));
   OK(integrate_first_half(s));
   if (s->ts.subcycling)
     OK(substep_solids(s));

@@ -5,10 +5,12 @@
  *   - under a constant acceleration, n velocity-Verlet steps reproduce free flight
  *     exactly: x = x0 + v0 t + a t^2/2, v = v0 + a t, with v_est = v^n + dt a;
  *   - a wall particle moves with its velocity and is never kicked;
- *   - with sub-cycled solids, the liquid's step leaves a solid's x, v and v_est to the
- *     sub-steps but for its second half kick of one sub-step (dt / 2 n_sub), and advances its
- *     density; a clot beside it is kicked and drifts as the liquid; the walls' densities
- *     are not integrated;
+ *   - with sub-cycled solids, the liquid's step leaves the x, v and v_est of the rows marked
+ *     substepped (a solid, a liquid particle in a sub-cycled contact) to the sub-steps but
+ *     for their second half kick (held: dt / 2 n_sub with the whole acceleration; respa:
+ *     that with the sub-cycled share, dt/2 with the rest), and advances their density; a
+ *     clot and a liquid particle beside them are kicked and drift as the liquid; the walls'
+ *     densities are not integrated;
  *   - with continuity density, rho advances by dt * drho per step (two half kicks),
  *     and is left alone with summation density;
  *   - with -sph_density_predict the forces see rho^n + dt drho^n and the step
@@ -19,6 +21,7 @@
 #include "unit_common.h"
 #include "dmhs/sim.h"
 #include "dmhs/integrate.h"
+#include "dmhs/fields.h"
 
 static void test_dt_limits(void **state) {
   (void)state;
@@ -49,7 +52,8 @@ static void test_dt_limits(void **state) {
 /* What the liquid's module declares it integrates (continuity: density rates). */
 static module liquid;
 
-static void make_sim(sim *s, sph_density_kind density) {
+/* extra: optional fields beyond SPH's (NULL-terminated, or NULL) */
+static void make_sim_with(sim *s, sph_density_kind density, const char *const *extra) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
   liquid = (module){.name = "liquid",
@@ -58,7 +62,13 @@ static void make_sim(sim *s, sph_density_kind density) {
   s->n_modules = 1;
   s->dt = 1e-3;
   OK(unit_enable_sph_fields());
+  for (const char *const *f = extra; f && *f; f++)
+    OK(fields_enable(*f));
   OK(particles_create(&s->ps));
+}
+
+static void make_sim(sim *s, sph_density_kind density) {
+  make_sim_with(s, density, NULL);
 }
 
 static void test_free_flight(void **state) {
@@ -95,26 +105,38 @@ static void test_free_flight(void **state) {
   OK(particles_destroy(&s.ps));
 }
 
-static void test_subcycled_solid(void **state) {
-  (void)state;
+/* One liquid step with sub-cycled rows (respa: the r-RESPA split, else held): the rows marked
+ * substepped (a solid, a liquid particle in a sub-cycled contact) are left to the sub-steps
+ * but for their second kick, the others kicked and drifted as ever. */
+static void subcycled_step(PetscBool respa) {
   static sim s;
-  make_sim(&s, SPH_DENSITY_CONTINUITY);
+  static const char *const sub_fields[] = {"a_hold", "substepped", NULL};
+  fields_reset();
+  make_sim_with(&s, SPH_DENSITY_CONTINUITY, sub_fields);
   s.ts.subcycling = PETSC_TRUE;
+  s.ts.respa = respa;
   s.ts.n_sub = 3;
   const double x0[2] = {0.1, -0.2}, v0[2] = {1.5, -0.5}, a[2] = {-3.0, 9.81}, drho = 12.0;
-  const particle_type types[] = {PTYPE_SOLID, PTYPE_CLOT, PTYPE_WALL, PTYPE_FLUID};
-  for (PetscInt i = 0; i < 4; i++) {
+  const double a_hold[2] = {0.5, -2.0}; /* the forces not sub-cycled */
+  /* a solid, a clot, a wall, a liquid particle, a liquid particle in contact */
+  const particle_type types[] = {PTYPE_SOLID, PTYPE_CLOT, PTYPE_WALL, PTYPE_FLUID, PTYPE_FLUID};
+  const int moves[] = {1, 0, 0, 0, 1};
+  for (PetscInt i = 0; i < 5; i++) {
     OK(particles_add_owned(&s.ps, i, types[i], x0, v0, 1.0, 1000.0, NULL));
     for (int k = 0; k < 2; k++) {
       s.ps.a[i][k] = a[k];
-      s.ps.v_est[i][k] = -9.0; /* what the solid keeps */
+      s.ps.a_hold[i][k] = a_hold[k];
+      s.ps.v_est[i][k] = -9.0; /* what a sub-cycled row keeps */
     }
     s.ps.drho[i] = drho;
+    s.ps.substepped[i] = moves[i];
   }
   const double dt = s.dt;
   OK(integrate_first_half(&s));
   for (int k = 0; k < 2; k++) {
-    assert_true(s.ps.x[0][k] == x0[k] && s.ps.v[0][k] == v0[k] && s.ps.v_est[0][k] == -9.0);
+    for (PetscInt i = 0; i < 5; i += 4) { /* the sub-cycled rows */
+      assert_true(s.ps.x[i][k] == x0[k] && s.ps.v[i][k] == v0[k] && s.ps.v_est[i][k] == -9.0);
+    }
     for (PetscInt i = 1; i < 4; i += 2) { /* the clot and the liquid */
       assert_true(s.ps.v_est[i][k] == v0[k] + dt * a[k]);
       assert_true(s.ps.v[i][k] == v0[k] + 0.5 * dt * a[k]);
@@ -123,17 +145,30 @@ static void test_subcycled_solid(void **state) {
     assert_true(s.ps.v_est[2][k] == v0[k] && s.ps.v[2][k] == v0[k]);
     assert_true(s.ps.x[2][k] == x0[k] + dt * v0[k]);
   }
-  for (PetscInt i = 0; i < 4; i++)
+  for (PetscInt i = 0; i < 5; i++)
     assert_true(s.ps.rho[i] == (i == 2 ? 1000.0 : 1000.0 + 0.5 * dt * drho));
   OK(integrate_second_half(&s));
+  const double half = 0.5 * dt, half_sub = 0.5 * dt / 3.0;
   for (int k = 0; k < 2; k++) {
-    assert_true(s.ps.v[0][k] == v0[k] + 0.5 * dt / 3.0 * a[k]);
+    /* held: the last sub-step's half kick with the whole acceleration; respa: the
+     * sub-cycled share over it, the rest (a_hold) over the step's half */
+    const double v_sub =
+        respa ? v0[k] + half_sub * a[k] + (half - half_sub) * a_hold[k] : v0[k] + half_sub * a[k];
+    assert_true(s.ps.v[0][k] == v_sub && s.ps.v[4][k] == v_sub);
     assert_true(s.ps.v[1][k] == v0[k] + 0.5 * dt * a[k] + 0.5 * dt * a[k]);
+    assert_true(s.ps.v[3][k] == v0[k] + 0.5 * dt * a[k] + 0.5 * dt * a[k]);
     assert_true(s.ps.v[2][k] == v0[k]);
   }
-  for (PetscInt i = 0; i < 4; i++)
+  for (PetscInt i = 0; i < 5; i++)
     assert_true(s.ps.rho[i] == (i == 2 ? 1000.0 : 1000.0 + 0.5 * dt * drho + 0.5 * dt * drho));
   OK(particles_destroy(&s.ps));
+  fields_reset();
+}
+
+static void test_subcycled_solid(void **state) {
+  (void)state;
+  subcycled_step(PETSC_FALSE);
+  subcycled_step(PETSC_TRUE);
 }
 
 static void test_summation_density_not_integrated(void **state) {

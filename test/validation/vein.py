@@ -13,6 +13,9 @@
   wrong length or width, or missing a part of the liquid, is not).
   With --compare DIR: vein.csv, vein-sinus.csv and vein-summary.csv are
   byte for byte those of DIR (rank-count invariance).
+  With --near DIR: the gap and the tips' positions within --near-tol of
+  their range in DIR's vein.csv over t <= --near-t-max (another time
+  stepping of the same case).
 --mode restart: runs to --t-stop (checkpoint), restarts from it to t_end,
   and compares the three CSVs byte for byte with --compare DIR (the
   uninterrupted run).
@@ -109,7 +112,33 @@ def mode_run(args):
              f"cycles after the point was chosen at t = {t_probe:.7g} s (T = {T:g} s, run to {t[-1]:.7g} s)")
     if args.compare:
         compare_files(args.outdir, args.compare, CSVS)
+    if args.near:
+        near(args, names, rows)
     print("PASS")
+
+
+def near(args, names, rows):
+    """The gap and both tips' positions within --near-tol of their range in --near DIR's vein.csv
+    (another time stepping of the same case) over t <= --near-t-max, at this run's rows
+    (the other's interpolated linearly: rows land at the first step past each output time)."""
+    rn, rr = read_csv(os.path.join(args.near, "vein.csv"))
+    t, tr = col(names, rows, "t"), col(rn, rr, "t")
+    worst = 0.0
+    for c in ["gap", "tip_upper_x", "tip_upper_y", "tip_lower_x", "tip_lower_y"]:
+        y, yr = col(names, rows, c), col(rn, rr, c)
+        sel = [k for k, a in enumerate(tr) if a <= args.near_t_max]
+        span = max(yr[k] for k in sel) - min(yr[k] for k in sel)
+        err = 0.0
+        for a, v in zip(t, y):
+            if a > args.near_t_max or a > tr[-1]:
+                continue
+            k = next(k for k in range(1, len(tr)) if tr[k] >= a)
+            w = (a - tr[k - 1]) / (tr[k] - tr[k - 1])
+            err = max(err, abs(v - (yr[k - 1] + w * (yr[k] - yr[k - 1]))))
+        print(f"  {c}: largest difference from {args.near} {err:.3g} m, {err / span:.3g} of its range {span:.3g} m")
+        worst = max(worst, err / span)
+    if worst > args.near_tol:
+        fail(f"the leaflets' motion departs from {args.near} by {worst:.3g} of its range (> {args.near_tol})")
 
 
 def mode_restart(args):
@@ -136,6 +165,9 @@ def main():
     p.add_argument("--close", type=float, default=0.9)
     p.add_argument("--max-rho-dev", type=float, default=0.03)
     p.add_argument("--max-mach", type=float, default=0.1)
+    p.add_argument("--near", help="a run of the same case to agree with (another time stepping)")
+    p.add_argument("--near-tol", type=float, default=0.02)
+    p.add_argument("--near-t-max", type=float, default=0.25)
     args = p.parse_args()
     mode_run(args) if args.mode == "run" else mode_restart(args)
 
