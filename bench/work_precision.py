@@ -5,6 +5,7 @@ wall time of the step loop, over fixed dt, automatic dt, solid sub-steps and
 a lower sound speed.
 
   bench/work_precision.py --exe build/dmhs --case flap|vein|colon --out DIR [--plot | --plot-only]
+                          [--settings "LABEL;LABEL"]   (only these, the reference and the automatic dt)
 
 Runs the settings one after another (never two at once: the wall times are
 compared), writes DIR/<case>.csv with one row per setting
@@ -63,6 +64,15 @@ CASES = {
             ("automatic dt, half-step density", ["-dt", "0", "-sph_density_predict", "false"]),
             ("fixed dt 4e-6 s, half-step density", ["-dt", "4e-6", "-sph_density_predict", "false"]),
             ("fixed dt 2e-6 s, half-step density", ["-dt", "2e-6", "-sph_density_predict", "false"]),
+            # multi-rate contact (doc/stability.md): the repulsion and the liquid in contact on
+            # the sub-steps, the sound speed binding dt
+            ("automatic dt, multi-rate contact, respa",
+             ["-dt", "0", "-solid_substeps", "0", "-repulsion_substeps", "-solid_substeps_scheme", "respa"]),
+            ("automatic dt, multi-rate contact, held",
+             ["-dt", "0", "-solid_substeps", "0", "-repulsion_substeps", "-solid_substeps_scheme", "held"]),
+            ("automatic dt, safety 0.5, multi-rate contact, respa",
+             ["-dt", "0", "-dt_safety", "0.5", "-solid_substeps", "0", "-repulsion_substeps",
+              "-solid_substeps_scheme", "respa"]),
         ],
     },
     "colon": {
@@ -157,6 +167,8 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--plot", action="store_true")
     ap.add_argument("--plot-only", action="store_true", help="plot DIR/<case>.csv without running")
+    ap.add_argument("--settings", help="run only these settings (their labels, separated by ';'), "
+                    "besides the reference and the automatic dt")
     a = ap.parse_args()
     exe = os.path.abspath(a.exe)
     case = CASES[a.case]
@@ -175,7 +187,14 @@ def main():
     rows = [("reference " + " ".join(case["reference"]), " ".join(case["reference"]), steps, loop, 0.0, dev,
              mach)]
     print(f"{a.case}: reference {' '.join(case['reference'])}: {steps} steps, loop {loop:.2f} s")
+    only = set(a.settings.split(";")) | {"automatic dt"} if a.settings else None
+    if only:
+        unknown = only - {label for label, _ in case["settings"]}
+        if unknown:
+            sys.exit(f"FAIL: --settings: no setting {sorted(unknown)} in case {a.case}")
     for k, (label, extra) in enumerate(case["settings"]):
+        if only and label not in only:
+            continue
         d = os.path.join(os.path.abspath(a.out), f"{a.case}-{k}")
         steps, loop, dev, mach = run(exe, case["opts"] + extra, d)
         err = series_error(ref, read_csv(os.path.join(d, case["csv"])), names)
