@@ -8,6 +8,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/errors.h"
 #include "dmhs/gather.h"
+#include "dmhs/whole_file.h"
 #include "dmhs/checkpoint.h"
 
 typedef struct errors {
@@ -116,7 +117,7 @@ static int errors_compare_gid(const void *a, const void *b) {
 
 static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
   const particles *ps = &s->ps;
-  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  char path[PETSC_MAX_PATH_LEN];
   double *mine, *all = NULL;
   size_t n_mine = 0, n_all;
   PetscFunctionBeginUser;
@@ -134,17 +135,13 @@ static PetscErrorCode errors_write_profile(errors *e, sim *s, double t_report) {
     PetscFunctionReturn(0);
   qsort(all, n_all / 4, 4 * sizeof(double), errors_compare_gid);
   PetscCall(errors_profile_path(s, t_report, path, sizeof(path)));
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-  FILE *f = fopen(tmp, "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
-  int ok = fprintf(f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
+  whole_file w;
+  PetscCall(whole_file_open(&w, path, NULL));
+  int ok = fprintf(w.f, "# t = %.9g s, v_ref = %.9g m/s\ny,vx,vx_exact\n", s->t, e->v_ref) > 0;
   for (size_t k = 0; k < n_all && ok; k += 4)
-    ok = fprintf(f, "%.9e,%.9e,%.9e\n", all[k + 1], all[k + 2], all[k + 3]) > 0;
-  ok = (fclose(f) == 0) && ok;
+    ok = fprintf(w.f, "%.9e,%.9e,%.9e\n", all[k + 1], all[k + 2], all[k + 3]) > 0;
   PetscCall(PetscFree(all));
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+  PetscCall(whole_file_commit(&w, ok, NULL));
   PetscFunctionReturn(0);
 }
 
@@ -224,15 +221,17 @@ static PetscErrorCode errors_checkpoint_write(diagnostic *self, sim *s, checkpoi
  * row at that step stays only if the errors sampled there (at_step): else it is the final
  * output of a run that ended at the checkpoint. */
 static PetscErrorCode errors_csv_truncate(errors *e, sim *s, PetscBool at_step) {
-  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8], line[512];
+  char path[PETSC_MAX_PATH_LEN], line[512];
+  whole_file w;
   PetscFunctionBeginUser;
   PetscCall(io_output_path(s, "error.csv", path, sizeof(path)));
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   PetscCheck(fclose(e->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "closing %s failed", path);
   e->csv = NULL;
-  FILE *in = fopen(path, "r"), *out = fopen(tmp, "w");
-  PetscCheck(in && out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot rewrite %s: %s", path,
+  FILE *in = fopen(path, "r");
+  PetscCheck(in, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot rewrite %s: %s", path,
              strerror(errno));
+  PetscCall(whole_file_open(&w, path, NULL));
+  FILE *out = w.f;
   int ok = 1, first = 1;
   while (ok && fgets(line, sizeof(line), in)) {
     long long step;
@@ -247,10 +246,7 @@ static PetscErrorCode errors_csv_truncate(errors *e, sim *s, PetscBool at_step) 
   if (first)
     ok = fprintf(out, "step,t,wall_s,l2,linf\n") > 0;
   fclose(in);
-  ok = (fclose(out) == 0) && ok;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+  PetscCall(whole_file_commit(&w, ok, NULL));
   e->csv = fopen(path, "a");
   PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,
              strerror(errno));

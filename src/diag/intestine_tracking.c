@@ -11,6 +11,7 @@
 #include "dmhs/intestine_measures.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
+#include "dmhs/whole_file.h"
 #include "dmhs/liquid_state.h"
 
 typedef struct {
@@ -193,12 +194,12 @@ typedef struct {
 /* <output_dir>/intestine-summary.csv (key,value,note), written to a temporary
  * name and renamed. */
 static PetscErrorCode intestine_write_summary(sim *s, const summary_row *rows, PetscInt n) {
-  char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+  char path[PETSC_MAX_PATH_LEN];
+  whole_file w;
   PetscFunctionBeginUser;
   PetscCall(io_output_path(s, "intestine-summary.csv", path, sizeof(path)));
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-  FILE *f = fopen(tmp, "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
+  PetscCall(whole_file_open(&w, path, NULL));
+  FILE *f = w.f;
   int ok = fprintf(f, "key,value,note\n") > 0;
   for (PetscInt i = 0; i < n; i++) {
     char note[256];
@@ -210,10 +211,7 @@ static PetscErrorCode intestine_write_summary(sim *s, const summary_row *rows, P
                                   : fprintf(f, "%s,n/a,%s\n", rows[i].key, note)) > 0 &&
          ok;
   }
-  ok = (fclose(f) == 0) && ok;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+  PetscCall(whole_file_commit(&w, ok, NULL));
   PetscFunctionReturn(0);
 }
 

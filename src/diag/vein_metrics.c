@@ -37,6 +37,7 @@
 #include "dmhs/checkpoint.h"
 #include "vein_cycle_peaks.h"
 #include "dmhs/csv.h"
+#include "dmhs/whole_file.h"
 #include "dmhs/liquid_state.h"
 #include "vein_leaflets.h"
 
@@ -343,12 +344,11 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
                           v->probe_gid, disp_mean, disp_std, v->n_hist, peak_s, n_cycles));
   }
   if (s->rank == 0) {
-    char path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN + 8];
+    char path[PETSC_MAX_PATH_LEN];
+    whole_file w;
     PetscCall(io_output_path(s, "vein-summary.csv", path, sizeof(path)));
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-    FILE *f = fopen(tmp, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp,
-               strerror(errno));
+    PetscCall(whole_file_open(&w, path, NULL));
+    FILE *f = w.f;
     char a[32], b[32], c[32], d[32];
     vein_csv_real(a, sizeof(a), v->n_hist > 0, disp_mean);
     vein_csv_real(b, sizeof(b), v->n_hist > 0, disp_std);
@@ -369,10 +369,7 @@ static PetscErrorCode vein_metrics_finish(diagnostic *self, sim *s) {
                      v->u_mean_peak, v->u_centre_peak, v->u_flux_peak1, v->u_flux_peak,
                      v->lay.rest_gap, v->gap_min, v->gap_max, v->crossings, v->rho_dev_max,
                      v->mach_max, v->probe_gid, a, b, c, d, n_cycles) > 0;
-    ok = (fclose(f) == 0) && ok;
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", tmp);
-    PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+    PetscCall(whole_file_commit(&w, ok, NULL));
   }
   if (v->csv)
     fclose(v->csv);

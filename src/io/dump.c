@@ -7,6 +7,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/gather.h"
 #include "dmhs/dump.h"
+#include "dmhs/whole_file.h"
 
 #define DUMP_COLS 7 /* gid, type, x, y, vx, vy, rho: all stored as doubles (gids < 2^53) */
 
@@ -46,24 +47,18 @@ PetscErrorCode dump_final(sim *s) {
   }
   PetscCall(gather_to_root(s->comm, mine, n_mine, &all, &total));
   if (s->rank == 0) {
-    char tmp[PETSC_MAX_PATH_LEN + 8];
     const size_t n = total / DUMP_COLS;
     qsort(all, n, DUMP_COLS * sizeof(double), dump_compare);
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", s->dump_final));
-    FILE *f = fopen(tmp, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-dump_final: cannot write %s: %s", tmp,
-               strerror(errno));
+    whole_file w;
+    PetscCall(whole_file_open(&w, s->dump_final, "-dump_final"));
+    FILE *f = w.f;
     int ok = fprintf(f, "gid,type,x,y,vx,vy,rho\n") > 0;
     for (size_t k = 0; k < n && ok; k++) {
       const double *r = all + DUMP_COLS * k;
       ok = fprintf(f, "%.0f,%.0f,%.17e,%.17e,%.17e,%.17e,%.17e\n", r[0], r[1], r[2], r[3], r[4],
                    r[5], r[6]) > 0;
     }
-    ok = (fclose(f) == 0) && ok;
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "-dump_final: writing %s failed (disk full?)", tmp);
-    PetscCheck(rename(tmp, s->dump_final) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-               "-dump_final: cannot rename %s to %s: %s", tmp, s->dump_final, strerror(errno));
+    PetscCall(whole_file_commit(&w, ok, "-dump_final"));
     PetscCall(PetscFree(all));
   }
   PetscCall(PetscFree(mine));

@@ -16,6 +16,7 @@
 #include "dmhs/fields.h"
 #include "dmhs/snapshot.h"
 #include "dmhs/xdmf.h"
+#include "dmhs/whole_file.h"
 #include "h5check.h"
 
 typedef struct {
@@ -151,11 +152,10 @@ static int xdmf_write_bonds(FILE *f, const xdmf_entry *e, const char *ind) {
 }
 
 PetscErrorCode xdmf_write(const xdmf *x, const char *path) {
-  char tmp[PETSC_MAX_PATH_LEN + 8];
+  whole_file w;
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-  FILE *f = fopen(tmp, "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", tmp, strerror(errno));
+  PetscCall(whole_file_open(&w, path, NULL));
+  FILE *f = w.f;
   int ok = fprintf(f, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf "
                       "Version=\"2.0\">\n"
                       "  <Domain>\n    <Grid Name=\"dmhs\" GridType=\"Collection\" "
@@ -175,10 +175,7 @@ PetscErrorCode xdmf_write(const xdmf *x, const char *path) {
     ok = ok && fprintf(f, "      </Grid>\n") > 0;
   }
   ok = ok && fprintf(f, "    </Grid>\n  </Domain>\n</Xdmf>\n") > 0;
-  ok = (fclose(f) == 0) && ok;
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "writing %s failed (disk full?)", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+  PetscCall(whole_file_commit(&w, ok, NULL));
   PetscFunctionReturn(0);
 }
 
