@@ -112,13 +112,16 @@ typedef struct {
   double K, rstar;
 } repulsion_args;
 
-/* Does the pair (i, j) repel? One liquid (fluid or clot: a clot particle was
- * liquid and stays among it) and one solid/wall; with bodies, also two solid
+/* Liquid for the repulsion: fluid or clot (a clot particle was liquid and stays among it). */
+static inline __attribute__((always_inline)) int repulsion_liquid(PetscInt type) {
+  return type == PTYPE_FLUID || type == PTYPE_CLOT;
+}
+
+/* Does the pair (i, j) repel? One liquid and one solid/wall; with bodies, also two solid
  * or wall particles of different bodies. */
 static inline __attribute__((always_inline)) int
 repulsion_acts(int bodies, const PetscInt *type, const PetscInt *body, PetscInt i, PetscInt j) {
-  const int fi = type[i] == PTYPE_FLUID || type[i] == PTYPE_CLOT,
-            fj = type[j] == PTYPE_FLUID || type[j] == PTYPE_CLOT;
+  const int fi = repulsion_liquid(type[i]), fj = repulsion_liquid(type[j]);
   if (fi != fj)
     return 1;
   return bodies && !fi && body[i] != body[j];
@@ -231,9 +234,9 @@ static PetscErrorCode repulsion_substep_members(module *self, sim *s, PetscInt *
     const double dx = ps->x[i][0] - ps->x[j][0], dy = ps->x[i][1] - ps->x[j][1];
     if (dx * dx + dy * dy >= r_m2)
       continue;
-    if (i < n_owned && (ps->type[i] == PTYPE_FLUID || ps->type[i] == PTYPE_CLOT))
+    if (i < n_owned && repulsion_liquid(ps->type[i]))
       mark[i] = 1;
-    if (j < n_owned && (ps->type[j] == PTYPE_FLUID || ps->type[j] == PTYPE_CLOT))
+    if (j < n_owned && repulsion_liquid(ps->type[j]))
       mark[j] = 1;
   }
   PetscFunctionReturn(0);
