@@ -127,14 +127,21 @@ def near(args, names, rows):
     for c in ["gap", "tip_upper_x", "tip_upper_y", "tip_lower_x", "tip_lower_y"]:
         y, yr = col(names, rows, c), col(rn, rr, c)
         sel = [k for k, a in enumerate(tr) if a <= args.near_t_max]
+        if len(sel) < 2:
+            fail(f"{args.near}/vein.csv has fewer than 2 rows up to t = {args.near_t_max} s")
         span = max(yr[k] for k in sel) - min(yr[k] for k in sel)
-        err = 0.0
+        if not span > 0:
+            fail(f"{c} does not move in {args.near}/vein.csv up to t = {args.near_t_max} s")
+        err, n = 0.0, 0
         for a, v in zip(t, y):
             if a > args.near_t_max or a > tr[-1]:
                 continue
             k = next(k for k in range(1, len(tr)) if tr[k] >= a)
             w = (a - tr[k - 1]) / (tr[k] - tr[k - 1])
             err = max(err, abs(v - (yr[k - 1] + w * (yr[k] - yr[k - 1]))))
+            n += 1
+        if n < len(sel) // 2:
+            fail(f"only {n} rows of this run up to t = {args.near_t_max} s to compare with {args.near}")
         print(f"  {c}: largest difference from {args.near} {err:.3g} m, {err / span:.3g} of its range {span:.3g} m")
         worst = max(worst, err / span)
     if worst > args.near_tol:
