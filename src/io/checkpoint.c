@@ -285,7 +285,7 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
       PetscCall(h5io_put_int64s(tmp, fid, "diagnostics_sampled", sampled, s->n_diagnostics));
     }
   }
-  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(tmp, fid, "particles", &grp));
   for (size_t k = 0; k < nf; k++) {
     if (!(t[k].flags & FIELD_CHECKPOINT))
       continue;
@@ -298,7 +298,7 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(topology_checkpoint_write(s, tmp, fid));
 
   /* private state of modules and diagnostics */
-  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "modules", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(tmp, fid, "modules", &grp));
   for (int m = 0; m < s->n_modules; m++) {
     module *mod = s->modules[m];
     char owner[80];
@@ -306,14 +306,13 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
       continue;
     PetscCall(PetscSNPrintf(owner, sizeof(owner), "module %s", mod->name));
     io.owner = owner;
-    PetscCallHDF5(tmp,
-                  io.group = H5Gcreate2(grp, mod->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCall(h5io_group_create(tmp, grp, mod->name, &io.group));
     PetscCall(mod->checkpoint_write(mod, s, &io));
     PetscCallHDF5(tmp, H5Gclose(io.group));
   }
   PetscCallHDF5(tmp, H5Gclose(grp));
   /* each diagnostic's state in a group of its own name */
-  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "diagnostics", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(tmp, fid, "diagnostics", &grp));
   for (int k = 0; k < s->n_diagnostics; k++) {
     diagnostic *d = s->diagnostics[k];
     char owner[96];
@@ -321,7 +320,7 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
       continue;
     PetscCall(PetscSNPrintf(owner, sizeof(owner), "diagnostic %s", d->name));
     io.owner = owner;
-    PetscCallHDF5(tmp, io.group = H5Gcreate2(grp, d->name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    PetscCall(h5io_group_create(tmp, grp, d->name, &io.group));
     PetscCall(d->checkpoint_write(d, s, &io));
     PetscCallHDF5(tmp, H5Gclose(io.group));
   }

@@ -133,13 +133,31 @@ static PetscErrorCode h5io_select_rows(const char *path, hid_t fspace, int rank_
   PetscFunctionReturn(0);
 }
 
+/* A creation property list that records no times in the object's header: the same run
+ * writes the same bytes (files compared with cmp). */
+static PetscErrorCode h5io_untimed(const char *path, hid_t cls, hid_t *plist) {
+  PetscFunctionBeginUser;
+  PetscCallHDF5(path, *plist = H5Pcreate(cls));
+  PetscCallHDF5(path, H5Pset_obj_track_times(*plist, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode h5io_group_create(const char *path, hid_t loc, const char *name, hid_t *grp) {
+  hid_t gcpl;
+  PetscFunctionBeginUser;
+  PetscCall(h5io_untimed(path, H5P_GROUP_CREATE, &gcpl));
+  PetscCallHDF5(path, *grp = H5Gcreate2(loc, name, H5P_DEFAULT, gcpl, H5P_DEFAULT));
+  PetscCallHDF5(path, H5Pclose(gcpl));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode h5io_write_rows(MPI_Comm comm, const char *path, hid_t loc, const field_desc *f,
                                const void *data, PetscInt n_local, PetscInt64 offset,
                                PetscInt64 n_global, int width_file) {
   const int rank_dims = width_file > 1 ? 2 : 1;
   const hsize_t dims[2] = {(hsize_t)n_global, (hsize_t)width_file};
   const hid_t mtype = h5io_native_type(f->kind);
-  hid_t fspace, mspace, dset, dxpl;
+  hid_t fspace, mspace, dset, dxpl, dcpl;
   void *padded = NULL;
   const void *buf = data;
   char dummy[16] = {0};
@@ -159,8 +177,10 @@ PetscErrorCode h5io_write_rows(MPI_Comm comm, const char *path, hid_t loc, const
   if (n_local == 0)
     buf = dummy;
   PetscCallHDF5(path, fspace = H5Screate_simple(rank_dims, dims, NULL));
-  PetscCallHDF5(
-      path, dset = H5Dcreate2(loc, f->name, mtype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_untimed(path, H5P_DATASET_CREATE, &dcpl));
+  PetscCallHDF5(path,
+                dset = H5Dcreate2(loc, f->name, mtype, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+  PetscCallHDF5(path, H5Pclose(dcpl));
   PetscCall(h5io_select_rows(path, fspace, rank_dims, n_local, offset, width_file, &mspace));
   PetscCall(h5io_xfer(path, &dxpl));
   /* an empty dataset has no storage to write to */

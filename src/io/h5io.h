@@ -19,6 +19,9 @@ PetscErrorCode h5io_close(const char *path, hid_t *fid);
 /* Rank 0 flushes tmp to disk and renames it to path; every rank returns the same error. */
 PetscErrorCode h5io_commit(MPI_Comm comm, const char *tmp, const char *path);
 
+/* Creates group `name` under loc (its header records no times, as no dataset's does). */
+PetscErrorCode h5io_group_create(const char *path, hid_t loc, const char *name, hid_t *grp);
+
 /* HDF5 memory type of a field's elements. */
 hid_t h5io_native_type(field_kind kind);
 

@@ -75,7 +75,7 @@ static PetscErrorCode snapshot_write_bonds(sim *s, const char *path, hid_t fid, 
              "snapshot: %" PetscInt64_FMT " bonds written over the ranks, %" PetscInt64_FMT
              " in the structure",
              n_check, *n_bonds);
-  PetscCallHDF5(path, grp = H5Gcreate2(fid, "bonds", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(path, fid, "bonds", &grp));
   PetscCall(h5io_write_rows(s->comm, path, grp, &rows_field, pairs, nb, my_offset, n_check, 2));
   PetscCallHDF5(path, H5Gclose(grp));
   PetscCall(PetscFree(all_ask));
@@ -127,7 +127,7 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
         PetscCall(h5io_put_reals(tmp, fid, a->name, &a->value, 1));
     }
   }
-  PetscCallHDF5(tmp, grp = H5Gcreate2(fid, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(tmp, fid, "particles", &grp));
   for (size_t k = 0; k < nf; k++) {
     if (!(t[k].flags & FIELD_OUTPUT))
       continue;

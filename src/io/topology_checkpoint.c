@@ -47,7 +47,7 @@ PetscErrorCode topology_checkpoint_write(sim *s, const char *path, hid_t fid) {
     aty[na] = t->angle_type[a];
     aid[na++] = t->angle_id[a];
   }
-  PetscCallHDF5(path, grp = H5Gcreate2(fid, "topology", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(h5io_group_create(path, fid, "topology", &grp));
   PetscCall(h5io_offsets(s->comm, nb, &offset, &n_bonds));
   PetscCheck(n_bonds == t->n_bonds_global, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "checkpoint: %" PetscInt64_FMT " bonds found over the ranks, %" PetscInt64_FMT
