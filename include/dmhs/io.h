@@ -27,6 +27,7 @@ typedef struct io_attribute {
 typedef struct io_state {
   /* options */
   PetscBool snapshots;                   /* -output_snapshots */
+  PetscInt snapshot_every;               /* -snapshot_every: a snapshot at every Nth output */
   double checkpoint_interval;            /* -checkpoint_interval [s], 0 = never */
   PetscBool checkpoint_at_end;           /* -checkpoint_at_end */
   char restart_file[PETSC_MAX_PATH_LEN]; /* -restart, "" = fresh start */
@@ -66,7 +67,8 @@ PetscErrorCode io_setup(struct sim *s);
  * checkpoint's, then rebuilds ghosts and pairs (no force evaluation: the next
  * kick uses the restored a and drho). No-op otherwise. */
 PetscErrorCode io_restart(struct sim *s);
-/* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false. */
+/* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false or
+ * the output's number (t / output_interval) is not a multiple of -snapshot_every. */
 PetscErrorCode io_output(struct sim *s);
 /* After every step (and before the first), on every rank: checkpoint at the interval or on a
  * stop signal (stop_signal.h); any_signal is the one any rank got (the step loop reduced

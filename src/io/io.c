@@ -42,6 +42,7 @@ PetscErrorCode io_set_from_options(sim *s) {
   io_state *io = &s->io;
   PetscFunctionBeginUser;
   io->snapshots = PETSC_TRUE;
+  io->snapshot_every = 1;
   io->checkpoint_at_end = PETSC_TRUE;
   io->last_checkpoint_step = -1;
   io->csv_keep_restart_rows = PETSC_TRUE;
@@ -50,6 +51,10 @@ PetscErrorCode io_set_from_options(sim *s) {
       "-output_snapshots",
       "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
       io->snapshots, &io->snapshots, NULL));
+  PetscCall(PetscOptionsInt("-snapshot_every",
+                            "Write a snapshot at every Nth output time only (and at the "
+                            "run's last step) [1]",
+                            NULL, io->snapshot_every, &io->snapshot_every, NULL));
   PetscCall(PetscOptionsReal(
       "-checkpoint_interval",
       "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
@@ -66,6 +71,8 @@ PetscErrorCode io_set_from_options(sim *s) {
       "(listed in run.json)",
       NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
   PetscOptionsEnd();
+  PetscCheck(io->snapshot_every >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-snapshot_every must be >= 1 (got %" PetscInt_FMT ")", io->snapshot_every);
   PetscCheck(io->checkpoint_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-checkpoint_interval must be >= 0 (got %g; 0 = never)", io->checkpoint_interval);
   PetscFunctionReturn(0);
@@ -354,6 +361,11 @@ PetscErrorCode io_output(sim *s) {
   PetscInt64 n, n_bonds;
   PetscFunctionBeginUser;
   if (!io->snapshots)
+    PetscFunctionReturn(0);
+  /* the output's number from t, so that a restart keeps the same cadence */
+  const PetscInt64 k = (PetscInt64)PetscFloorReal(s->t / s->output_interval + 0.5);
+  const PetscBool last = s->final_output || s->t >= s->t_end - 0.5 * s->dt;
+  if (io->snapshot_every > 1 && !last && k % io->snapshot_every != 0)
     PetscFunctionReturn(0);
   PetscCall(snapshot_write(s, io->snapshot_index, &n, &n_bonds));
   if (s->rank == 0) {

@@ -258,3 +258,5 @@ dmhs_cli_fail(cli_repulsion_substeps_without_substeps "-repulsion_substeps runs 
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -repulsion_substeps -output_dir ${DMHS_CLI_OUT}/repulsion-substeps-alone)
 dmhs_cli_fail(cli_solid_substeps_bad_scheme "-solid_substeps_scheme middle: unknown value; -solid_substeps_scheme takes one of respa, held"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -solid_substeps 0 -solid_substeps_scheme middle -output_dir ${DMHS_CLI_OUT}/substeps-bad-scheme)
+dmhs_cli_fail(cli_snapshot_every_zero "-snapshot_every must be >= 1 \\(got 0\\)"
+  -scene poiseuille -snapshot_every 0 -t_end 1e-6 -quiet -output_dir ${DMHS_CLI_OUT}/snapshot-every-zero)

@@ -18,3 +18,9 @@ foreach(case "poiseuille_quick;0.015;-output_interval;0.01" "vein_quick;0.006;-o
            2 2 1 ${t_end} -options_file ${PROJECT_SOURCE_DIR}/input/${input}.opts ${extra})
   set_tests_properties(io_restart_between_outputs_${name} PROPERTIES LABELS "io;mpi" PROCESSORS 2 TIMEOUT 180)
 endforeach()
+
+# -snapshot_every (test/io/snapshot_every.sh): snapshots at every Nth output time and at the
+# last step, every diagnostics row kept, the cadence kept across a restart.
+add_test(NAME io_snapshot_every COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/../io/snapshot_every.sh ${DMHS_EXE}
+         ${DMHS_PYTHON} ${CMAKE_BINARY_DIR}/test-output/io/snapshot_every ${PROJECT_SOURCE_DIR}/input)
+set_tests_properties(io_snapshot_every PROPERTIES LABELS "io;validation" TIMEOUT 180)
