@@ -2,11 +2,13 @@
 # Are two builds' results the same bit for bit? Runs every quick input over a
 # short stretch with binary A and binary B, on 1 and 2 ranks and as a run
 # stopped half-way and continued from its checkpoint, and compares every CSV,
-# snapshot, checkpoint and XDMF index with cmp (run.json and the log hold
-# times and commits, so they are left out). Both sides run in the same
+# snapshot, checkpoint and XDMF index by its bytes (bitwise_compare.py: only
+# the wall-clock times, wall_s, are left out; run.json and the log hold times
+# and commits, so they are not compared). Both sides run in the same
 # directory, moved aside afterwards: the snapshots record the options.
 #   scripts/dev/bitwise.sh OLD_BIN NEW_BIN [case ...]
-# A case is an input name without .opts (default: every quick input below).
+# A case is an input name without .opts, or one of the variants below
+# (default: every quick input and every variant).
 # Exit 0 when every file is identical; otherwise the differing files are
 # listed and the exit status is 1. Work files go to $BITWISE_DIR (default: a
 # new temporary directory, removed when everything agrees).
@@ -28,18 +30,22 @@ mpirun=(mpirun --oversubscribe --allow-run-as-root)
 # case: t_end of the short stretch [s] and its output interval [s]; the
 # restart stops at half of t_end
 declare -A t_end=(
-  [poiseuille-quick]=0.02 [couette-quick]=0.02 [womersley-quick]=0.0206
+  [vein-quick+multirate]=0.02 [poiseuille-quick]=0.02 [couette-quick]=0.02 [womersley-quick]=0.0206
   [flap-quick]=0.02 [cantilever]=0.004 [peristaltic_channel-quick]=4
   [intestine-quick]=0.02 [vein-quick]=0.02 [vein-clot-quick]=0.02
 )
 declare -A interval=(
-  [poiseuille-quick]=0.002 [couette-quick]=0.002 [womersley-quick]=0.00206
+  [vein-quick+multirate]=0.002 [poiseuille-quick]=0.002 [couette-quick]=0.002 [womersley-quick]=0.00206
   [flap-quick]=0.002 [cantilever]=0.0004 [peristaltic_channel-quick]=0.4
   [intestine-quick]=0.002 [vein-quick]=0.002 [vein-clot-quick]=0.002
 )
+# variants: an input with options of its own
+declare -A input=([vein-quick+multirate]=vein-quick)
+declare -A extra=([vein-quick+multirate]="-solid_substeps 0 -repulsion_substeps -solid_substeps_scheme respa")
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(poiseuille-quick couette-quick womersley-quick flap-quick
-  cantilever peristaltic_channel-quick intestine-quick vein-quick vein-clot-quick)
+  cantilever peristaltic_channel-quick intestine-quick vein-quick vein-clot-quick
+  vein-quick+multirate)
 
 work=${BITWISE_DIR:-$(mktemp -d)}
 mkdir -p "$work"
@@ -49,30 +55,19 @@ differ=0
 run() {
   local bin=$1 dir=$2 ranks=$3 tend=$4
   shift 4
-  (cd "$root" && "${mpirun[@]}" -n "$ranks" "$bin" -options_file "input/$c.opts" \
-    -t_end "$tend" -output_interval "${interval[$c]}" -output_dir "$dir" -quiet "$@" \
+  # shellcheck disable=SC2086 # the variant's options are words
+  (cd "$root" && "${mpirun[@]}" -n "$ranks" "$bin" -options_file "input/${input[$c]:-$c}.opts" \
+    ${extra[$c]:-} -t_end "$tend" -output_interval "${interval[$c]}" -output_dir "$dir" -quiet "$@" \
     >> "$work/$c.log" 2>&1) || { echo "bitwise: $c failed, see $work/$c.log" >&2; exit 1; }
 }
 
 compare() {
-  local a=$1 b=$2 n=0
-  while IFS= read -r f; do
-    n=$((n + 1))
-    if ! cmp -s "$a/$f" "$b/$f"; then
-      echo "  differs: $f"
-      differ=1
-    fi
-  done < <(cd "$a" && find . -type f \( -name '*.csv' -o -name '*.h5' -o -name '*.xdmf' \) | sort)
-  if [ "$(cd "$a" && find . -type f | wc -l)" != "$(cd "$b" && find . -type f | wc -l)" ]; then
-    echo "  differs: the number of files"
-    differ=1
-  fi
-  echo "  $n files compared"
+  /usr/bin/python3 "$root/scripts/dev/bitwise_compare.py" "$1" "$2" || differ=1
 }
 
 for c in "${cases[@]}"; do
   [ -n "${t_end[$c]:-}" ] || { echo "bitwise: no stretch known for case $c" >&2; exit 2; }
-  [ -f "$root/input/$c.opts" ] || { echo "bitwise: no input/$c.opts" >&2; exit 2; }
+  [ -f "$root/input/${input[$c]:-$c}.opts" ] || { echo "bitwise: no input/${input[$c]:-$c}.opts" >&2; exit 2; }
   half=$(/usr/bin/python3 -c "print(${t_end[$c]} / 2)")
   for ranks in 1 2; do
     for side in old new; do
