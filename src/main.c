@@ -3,6 +3,7 @@
 #include <string.h>
 #include <strings.h>
 #include "dmhs/driver.h"
+#include "dmhs/io.h"
 #include "dmhs/options_files.h"
 #include "dmhs/console_log.h"
 

@@ -1,6 +1,9 @@
-/* struct sim owns everything: run control, domain, particles, ghosts, cells,
- * the enabled modules, the scene and its diagnostics. The run (setup, the step loop) is the
- * driver's (src/driver/run.c, driver.h); neighbour handling is neighbours.c. */
+/* struct sim, the core state: domain, particles, ghosts, cells, topology, the enabled
+ * modules, the clock and the step's sub-steps. The upper layers' own state (io's, the
+ * driver's time-step control and progress clock, the scene) is theirs: sim only points to
+ * it, through forward-declared structs, and a file that reads it includes its header. The
+ * run (setup, the step loop) is the driver's (src/driver/run.c, driver.h); neighbour
+ * handling is neighbours.c. */
 #ifndef DMHS_SIM_H
 #define DMHS_SIM_H
 #include <petscsys.h>
@@ -9,16 +12,12 @@
 #include "dmhs/halo.h"
 #include "dmhs/cells.h"
 #include "dmhs/module.h"
-#include "dmhs/scene.h"
 #include "dmhs/diagnostic.h"
-#include "dmhs/sph.h"
 #include "dmhs/partition.h" /* mpi */
 #include "dmhs/migrate.h"   /* mpi */
-#include "dmhs/io.h"
 #include "dmhs/topology.h"
 #include "dmhs/options.h" /* checked option readers, in every module */
-#include "dmhs/timestep.h"
-#include "dmhs/progress.h"
+#include "dmhs/substep.h"
 
 #define SIM_MAX_MODULES 16
 
@@ -32,15 +31,19 @@ typedef struct sim {
   /* run control */
   double t, dt, t_end;
   PetscInt step;
+  /* t = t_anchor + (step - step_anchor) dt: the time and step of the last dt change */
+  double t_anchor;
+  PetscInt step_anchor;
+  substep_plan substeps; /* the solids' sub-steps of this step (set by timestep.c) */
   double output_interval, next_output_t; /* physical time between output rows/snapshots */
   PetscInt last_output_step; /* the step of the last output (-1: none in this session) */
   PetscBool final_output;    /* the run's final output, its last step not an output time */
   double progress_interval, next_progress_t;
-  progress_clock progress; /* the wall-clock lines and the projection (progress.c) */
+  struct progress_clock *progress; /* the driver's: wall-clock lines, projection (progress.c) */
   char output_dir[PETSC_MAX_PATH_LEN];
   PetscBool quiet;
   preflight_action preflight;
-  timestep ts; /* fixed-dt check or automatic dt, before every step (timestep.c) */
+  struct timestep *ts; /* the driver's: fixed-dt check or automatic dt (timestep.c) */
 
   /* state */
   domain dom;
@@ -71,7 +74,8 @@ typedef struct sim {
   topology *topo; /* bonds and angles (solids); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
-  scene *scn;
+  struct scene *scn;      /* the scenes' interface (scene.h): only the driver calls it */
+  const char *scene_name; /* its name, for the lower layers' messages and files */
   /* what the scene measures, sampled after the steps of each one's schedule (diagnostic.h) */
   diagnostic *diagnostics[SIM_MAX_DIAGNOSTICS];
   int n_diagnostics;
@@ -81,7 +85,7 @@ typedef struct sim {
   PetscInt64 particle_steps; /* owned particles x steps, summed over ranks */
 
   /* snapshots, checkpoints, restart, run.json (src/io/io.c) */
-  io_state io;
+  struct io_state *io;
 } sim;
 
 /* The enabled module of that registry name, or NULL. */

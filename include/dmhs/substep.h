@@ -17,6 +17,20 @@
 
 struct sim;
 
+/* -solid_substeps 0 picks at most this many */
+#define SUBSTEPS_MAX 1000
+
+/* The solids' sub-steps of the current step, which the driver's time-step control
+ * (timestep.h) sets before it. */
+typedef struct substep_plan {
+  PetscBool on; /* sub-cycling: -solid_substeps other than 1 */
+  PetscInt n;   /* sub-steps of the current step */
+  /* -solid_substeps_scheme: how the forces that are not sub-cycled act on the rows that move
+   * on the sub-steps: half at each end of the step (r-RESPA) or held at their start-of-step
+   * value on every sub-step */
+  PetscBool respa;
+} substep_plan;
+
 /* Before the step's first kick: marks the rows that move on its sub-steps
  * (particles.substepped): the solids, and what the sub-cycled modules add
  * (module.substep_members). */

@@ -33,8 +33,6 @@ struct dt_limits;
 #define DT_BAND_MID       0.95
 /* -dt_min 0: this fraction of the first automatic dt */
 #define DT_MIN_FRACTION 1e-3
-/* -solid_substeps 0 picks at most this many */
-#define SUBSTEPS_MAX 1000
 
 typedef struct timestep {
   PetscBool adaptive;              /* -dt 0 (set by timestep_choose_first) */
@@ -44,18 +42,10 @@ typedef struct timestep {
   double dt_min;                   /* -dt_min [s] (0 until the first automatic dt sets it) */
   char binding[32];                /* the smallest limit at the last evaluation */
   double binding_value;
-  double t_anchor; /* time and step of the last dt change */
-  PetscInt step_anchor;
   PetscInt n_changes;       /* dt changes during this run (restart: since it) */
   PetscBool warned;         /* fixed dt over a limit with -preflight warn: said once */
   FILE *csv;                /* rank 0: dt.csv */
   PetscInt substeps_option; /* -solid_substeps: 1 = off, 0 = automatic */
-  PetscBool subcycling;     /* substeps_option != 1 */
-  PetscInt n_sub;           /* sub-steps of the current step */
-  /* -solid_substeps_scheme: how the forces that are not sub-cycled act on the rows that move
-   * on the sub-steps: half at each end of the step (r-RESPA) or held at their start-of-step
-   * value on every sub-step */
-  PetscBool respa;
 } timestep;
 
 /* -dt, -dt_safety, -dt_growth, -dt_min, -solid_substeps. */

@@ -7,49 +7,14 @@
  *   forces at x^{n+1} -> a^{n+1}, drho^{n+1}
  *   v^{n+1} = v + dt/2 a^{n+1},  rho^{n+1} = rho + dt/2 drho^{n+1}
  * Walls move with their prescribed velocity and are not kicked.
- * Also: the time-step limits of every module (the stability report) and the
- * per-step state check (no NaN ever reaches an output file). */
+ * Also: the per-step state check (no NaN ever reaches an output file). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/integrate.h"
 #include "dmhs/events.h"
-#include "dmhs/timestep.h"
-
-/* Limits from pair geometry (an arm, a stretch, a closest approach) may see a
- * ghost's periodic image a rounding apart on different rank counts: rounded
- * down to 2^-24 relative, they agree bit for bit on any decomposition but for
- * a value within an ulp of a grid point. */
-static double dt_limit_round(double v) {
-  if (!isfinite(v) || v <= 0)
-    return v;
-  int e;
-  const double m = frexp(v, &e);
-  return ldexp(floor(m * 16777216.0) / 16777216.0, e);
-}
-
-PetscErrorCode dt_limits_add(dt_limits *l, const char *name, const char *formula, double value) {
-  PetscFunctionBeginUser;
-  value = dt_limit_round(value);
-  PetscCheck(l->n < DT_LIMITS_MAX, PETSC_COMM_SELF, PETSC_ERR_PLIB, "too many time-step limits");
-  PetscCall(PetscStrncpy(l->item[l->n].name, name, sizeof(l->item[l->n].name)));
-  PetscCall(PetscStrncpy(l->item[l->n].formula, formula, sizeof(l->item[l->n].formula)));
-  l->item[l->n].value = value;
-  l->n++;
-  PetscFunctionReturn(0);
-}
-
-double dt_limits_min(const dt_limits *l, int *which) {
-  double best = INFINITY;
-  *which = -1;
-  for (int k = 0; k < l->n; k++)
-    if (l->item[k].value < best) {
-      best = l->item[k].value;
-      *which = k;
-    }
-  return best;
-}
+#include "dmhs/substep.h"
 
 /* The density the force evaluation sees, on every row but walls: rho^n + dt/2 drho^n (the
  * kick's), or
@@ -107,7 +72,7 @@ PetscErrorCode integrate_first_half(sim *s) {
   const double dt = s->dt, half = 0.5 * s->dt;
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
-  const int subcycled = s->ts.subcycling; /* marked rows move in substep_solids */
+  const int subcycled = s->substeps.on; /* marked rows move in substep_solids */
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
   if (subcycled)
@@ -141,7 +106,7 @@ static inline unsigned integrate_kick_components(const sim *s, double half, doub
   /* respa: the forces not sub-cycled (a_hold) kick a row that moved on the sub-steps over
    * dt/2 here, half_solid of it with the rest of a */
   const double *restrict a_hold = subcycled ? &ps->a_hold[0][0] : NULL;
-  const double rest = subcycled && s->ts.respa ? half - half_solid : 0.0;
+  const double rest = subcycled && s->substeps.respa ? half - half_solid : 0.0;
   double *restrict v = &ps->v[0][0];
   double lo[DMHS_DIM], hi[DMHS_DIM];
   for (int k = 0; k < DMHS_DIM; k++) { /* periodic directions wrap at the next build */
@@ -197,10 +162,10 @@ PetscErrorCode integrate_second_half(sim *s) {
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
   /* sub-cycled solids: the second half kick of their last sub-step */
-  const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
+  const double half_solid = s->substeps.on ? half / (double)s->substeps.n : half;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  if (s->ts.subcycling)
+  if (s->substeps.on)
     (void)integrate_kick_components(s, half, half_solid, 1, 0);
   else
     (void)integrate_kick_components(s, half, half_solid, 0, 0);
@@ -248,12 +213,12 @@ PetscErrorCode integrate_second_half_checked(sim *s) {
     PetscFunctionReturn(0);
   }
   const double half = 0.5 * s->dt;
-  const double half_solid = s->ts.subcycling ? half / (double)s->ts.n_sub : half;
+  const double half_solid = s->substeps.on ? half / (double)s->substeps.n : half;
   int continuity, predict;
   integrate_density_mode(s, &continuity, &predict);
   PetscCall(PetscLogEventBegin(events.integrate, 0, 0, 0, 0));
-  unsigned bad = s->ts.subcycling ? integrate_kick_components(s, half, half_solid, 1, 1)
-                                  : integrate_kick_components(s, half, half_solid, 0, 1);
+  unsigned bad = s->substeps.on ? integrate_kick_components(s, half, half_solid, 1, 1)
+                                : integrate_kick_components(s, half, half_solid, 0, 1);
   if (!continuity) /* each density mode its own loop */
     bad |= integrate_density_rows(ps, s->dt, 0, 1);
   else if (!predict)

@@ -198,7 +198,7 @@ PetscErrorCode partition_setup(partition *p, sim *s) {
   PetscCheck(built_min == built_max, s->comm, PETSC_ERR_PLIB,
              "partition: scene '%s' built %" PetscInt64_FMT " to %" PetscInt64_FMT
              " particles per rank; scenes must build the full set on every rank",
-             s->scn->name, built_min, built_max);
+             s->scene_name, built_min, built_max);
   PetscInt *counts = NULL;
   if (s->rank == 0) {
     PetscCall(PetscCalloc1(p->n_cells, &counts));

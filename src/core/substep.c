@@ -41,10 +41,10 @@ PetscErrorCode substep_solids(sim *s) {
   particles *ps = &s->ps;
   const PetscInt *moves = ps->substepped;
   static const char *const positions[] = {"x"};
-  const PetscInt n = s->ts.n_sub;
+  const PetscInt n = s->substeps.n;
   const double h = s->dt / (double)n, half = 0.5 * h, half_dt = 0.5 * s->dt;
   /* with one sub-step both schemes are the plain step, written as it is */
-  const int respa = s->ts.respa && n > 1;
+  const int respa = s->substeps.respa && n > 1;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.substeps, 0, 0, 0, 0));
   /* first half kick: the sub-cycled share of the last evaluation over h/2 and, with respa,

@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/diagnostic.h"
 #include "dmhs/events.h"
 
@@ -73,11 +74,11 @@ PetscBool diagnostic_is_due(const diagnostic *d, const sim *s) {
  * the restart's time are this diagnostic's (io_state.csv_keep_restart_rows). */
 static PetscErrorCode diagnostic_sample_one(diagnostic *d, sim *s) {
   PetscFunctionBeginUser;
-  s->io.csv_keep_restart_rows = d->restart_sampled;
+  s->io->csv_keep_restart_rows = d->restart_sampled;
   PetscCall(PetscLogEventBegin(d->event, 0, 0, 0, 0));
   PetscCall(d->sample(d, s));
   PetscCall(PetscLogEventEnd(d->event, 0, 0, 0, 0));
-  s->io.csv_keep_restart_rows = PETSC_TRUE;
+  s->io->csv_keep_restart_rows = PETSC_TRUE;
   d->sampled_step = s->step;
   PetscFunctionReturn(0);
 }

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/errors.h"
 #include "dmhs/gather.h"
 #include "dmhs/whole_file.h"
@@ -68,7 +69,7 @@ static PetscErrorCode errors_setup(errors *e, sim *s, errors_exact_fn exact, con
   e->next_report = 0;
   if (s->rank == 0) {
     /* a restart continues the file (errors_checkpoint_read drops rows past the checkpoint) */
-    const PetscBool append = s->io.restart_file[0] ? PETSC_TRUE : PETSC_FALSE;
+    const PetscBool append = s->io->restart_file[0] ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(io_output_path(s, "error.csv", path, sizeof(path)));
     e->csv = fopen(path, append ? "a" : "w");
     PetscCheck(e->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path,

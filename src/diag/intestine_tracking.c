@@ -5,6 +5,8 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/intestine_tracking.h"
+#include "dmhs/io.h"
+#include "dmhs/sph.h"
 #include "dmhs/body_force.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"

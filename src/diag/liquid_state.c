@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdint.h>
 #include "dmhs/liquid_state.h"
+#include "dmhs/sph.h"
 
 PetscErrorCode liquid_state_bounds(sim *s, double *rho_dev, double *mach) {
   const particles *ps = &s->ps;
@@ -10,7 +11,7 @@ PetscErrorCode liquid_state_bounds(sim *s, double *rho_dev, double *mach) {
   PetscFunctionBeginUser;
   PetscCheck(sp, s->comm, PETSC_ERR_ARG_WRONGSTATE,
              "the liquid's compressibility bounds need the sph module (scene %s has none)",
-             s->scn->name);
+             s->scene_name);
   for (PetscInt i = 0; i < ps->n_owned; i++) {
     if (ps->type[i] != PTYPE_FLUID)
       continue;
@@ -31,7 +32,7 @@ PetscErrorCode liquid_state_worst(sim *s, double limit, PetscInt64 *n_over, doub
   PetscFunctionBeginUser;
   PetscCheck(sp, s->comm, PETSC_ERR_ARG_WRONGSTATE,
              "the liquid's compressibility bounds need the sph module (scene %s has none)",
-             s->scn->name);
+             s->scene_name);
   for (PetscInt i = 0; i < ps->n_owned; i++)
     if (ps->type[i] == PTYPE_FLUID) {
       const double dev = fabs(ps->rho[i] / sp->rho0 - 1.0);

@@ -31,6 +31,8 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/vein_metrics.h"
+#include "dmhs/io.h"
+#include "dmhs/sph.h"
 #include "dmhs/stress.h"
 #include "dmhs/gather.h"
 #include "dmhs/extreme.h"
@@ -222,7 +224,7 @@ static PetscErrorCode vein_metrics_sample(diagnostic *self, sim *s) {
   vein_metrics *v = self->data;
   PetscFunctionBeginUser;
   /* a restarted run continues with the next output time: its step-0 state was written */
-  if (s->io.restarted && s->t <= s->io.restart_t + 0.5 * s->dt)
+  if (s->io->restarted && s->t <= s->io->restart_t + 0.5 * s->dt)
     PetscFunctionReturn(0);
   PetscCall(vein_leaflets_gather(&v->leaves, s));
   PetscCall(stress_compute(s));

@@ -3,10 +3,14 @@
 #include <math.h>
 #include <time.h>
 #include "dmhs/sim.h"
+#include "dmhs/scene.h"
+#include "dmhs/io.h"
+#include "dmhs/timestep.h"
+#include "dmhs/sph.h"
 #include "dmhs/progress.h"
 
 PetscErrorCode progress_set_from_options(sim *s) {
-  progress_clock *pc = &s->progress;
+  progress_clock *pc = s->progress;
   PetscFunctionBeginUser;
   pc->wall_interval = PROGRESS_WALL_INTERVAL_DEFAULT;
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
@@ -32,13 +36,13 @@ PetscErrorCode progress_set_from_options(sim *s) {
 }
 
 void progress_start(sim *s) {
-  s->progress.first_step = s->step;
-  s->progress.last_line_wtime = s->loop_start_wtime;
-  s->progress.any_line = PETSC_FALSE;
+  s->progress->first_step = s->step;
+  s->progress->last_line_wtime = s->loop_start_wtime;
+  s->progress->any_line = PETSC_FALSE;
 }
 
 PetscBool progress_wall_due(const sim *s) {
-  const progress_clock *pc = &s->progress;
+  const progress_clock *pc = s->progress;
   if (pc->wall_interval <= 0)
     return PETSC_FALSE;
   const double wait =
@@ -56,7 +60,7 @@ typedef struct {
 
 static progress_outlook progress_look_ahead(const sim *s) {
   progress_outlook o;
-  const PetscInt done = s->step - s->progress.first_step;
+  const PetscInt done = s->step - s->progress->first_step;
   /* the loop stops at the step nearest t_end: the first t >= t_end - dt/2 */
   const double to_go = (s->t_end - s->t) / s->dt - 0.5;
   o.steps_left = to_go > 0 ? ceil(to_go) : 0.0;
@@ -112,7 +116,7 @@ static PetscErrorCode progress_print(sim *s, const progress_outlook *o) {
                         "step %8" PetscInt_FMT
                         "  t %.6e s  dt %.3e s (%s)  particle-steps/s %.3e  ETA %s (%s)  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",
-                        s->step, s->t, s->dt, s->ts.binding[0] ? s->ts.binding : "no limit",
+                        s->step, s->t, s->dt, s->ts->binding[0] ? s->ts->binding : "no limit",
                         particle_steps_per_second(s, o->seconds_spent), eta, ends, sqrt(global[0]),
                         global[1], s->part.imbalance));
   PetscFunctionReturn(0);
@@ -132,12 +136,12 @@ static PetscErrorCode progress_print_projection(sim *s, const progress_outlook *
       "projection after %d steps: %.0f steps to t_end = %s s, %s of wall time (%s to go at "
       "%.3e s per step), ending about %s local time%s\n",
       PROGRESS_PROJECTION_STEPS, steps_total, t_end, total, left, o->step_seconds, ends,
-      s->ts.adaptive ? "; the automatic dt changes with the state, and the count with it" : ""));
+      s->ts->adaptive ? "; the automatic dt changes with the state, and the count with it" : ""));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode progress_after_step(sim *s, PetscBool wall_due) {
-  progress_clock *pc = &s->progress;
+  progress_clock *pc = s->progress;
   PetscFunctionBeginUser;
   const PetscBool interval_due =
       s->t >= s->next_progress_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;

@@ -15,6 +15,8 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "dmhs/driver.h"
+#include "dmhs/io.h"
+#include "dmhs/timestep.h"
 #include "dmhs/sim.h"
 #include "dmhs/neighbours.h"
 #include "dmhs/fields.h"
@@ -69,7 +71,7 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
     s->output_interval = s->t_end / 100;
   PetscCall(progress_set_from_options(s));
   /* run.json: how often a live run's heartbeat comes at the latest */
-  s->io.heartbeat_interval = s->progress.wall_interval;
+  s->io->heartbeat_interval = s->progress->wall_interval;
   PetscFunctionReturn(0);
 }
 
@@ -136,7 +138,7 @@ static PetscErrorCode sim_prepare_output_dir(sim *s) {
 
 PetscErrorCode sim_compute_forces(sim *s) {
   PetscFunctionBeginUser;
-  if (s->ts.subcycling) {
+  if (s->substeps.on) {
     PetscCall(substep_compute_forces(s)); /* the solids' own share kept apart */
     PetscFunctionReturn(0);
   }
@@ -188,6 +190,10 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(registry_initialize());
   PetscCall(PetscNew(&s));
   *out = s;
+  /* the layers' own state, which the core state only points to */
+  PetscCall(PetscNew(&s->io));
+  PetscCall(PetscNew(&s->ts));
+  PetscCall(PetscNew(&s->progress));
   s->comm = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &s->rank));
   PetscCallMPI(MPI_Comm_size(comm, &s->size));
@@ -221,13 +227,14 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
 
   /* scene options (they set module defaults and enable modules), then modules' own */
   PetscCall(registry_create_scene(scene_name, &s->scn));
+  s->scene_name = s->scn->name;
   PetscCall(s->scn->set_from_options(s->scn, s));
   for (int m = 0; m < s->n_modules; m++) {
     const module *mod = s->modules[m];
     PetscCall(mod->set_from_options(s->modules[m], s));
     /* a module that moves more than the solids on the sub-steps (by its option -<name>_substeps)
      * means nothing without them */
-    PetscCheck(!mod->substep_members || !mod->solid_internal || s->ts.subcycling, s->comm,
+    PetscCheck(!mod->substep_members || !mod->solid_internal || s->substeps.on, s->comm,
                PETSC_ERR_ARG_INCOMP,
                "-%s_substeps runs the %s on the solid sub-steps, but there are none "
                "(-solid_substeps 1): give -solid_substeps 0 (automatic) or N > 1",
@@ -237,7 +244,7 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
 
   PetscCall(sim_prepare_output_dir(s));
   /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
-  PetscCall(console_log_open(s->output_dir, s->io.restart_file));
+  PetscCall(console_log_open(s->output_dir, s->io->restart_file));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(s->scn->build(s->scn, s));
   double reach = 0;
@@ -314,7 +321,7 @@ PetscErrorCode sim_run(sim *s) {
   PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscLogStagePush(events.stage_steps));
   /* io: a restarted run already diagnosed and wrote out this state */
-  if (!s->io.restarted) {
+  if (!s->io->restarted) {
     PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
     PetscCall(diagnostics_sample(s));
     PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
@@ -329,10 +336,10 @@ PetscErrorCode sim_run(sim *s) {
   /* stop at the step nearest t_end */
   while (!stop && s->t < s->t_end - 0.5 * s->dt) {
     PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
-    if (s->ts.subcycling)
+    if (s->substeps.on)
       PetscCall(substep_mark_members(s)); /* the rows that move on the sub-steps */
     PetscCall(integrate_first_half(s));
-    if (s->ts.subcycling)
+    if (s->substeps.on)
       PetscCall(substep_solids(s)); /* the solids' sub-steps */
     timestep_advance(s);
     PetscCall(neighbours_update(s, s->force_rebuild));
@@ -394,6 +401,9 @@ PetscErrorCode sim_destroy(sim **sp) {
   PetscCall(particles_destroy(&s->ps));
   PetscCall(registry_finalize());
   options_forget();
+  PetscCall(PetscFree(s->progress));
+  PetscCall(PetscFree(s->ts));
+  PetscCall(PetscFree(s->io));
   PetscCall(PetscFree(*sp));
   PetscFunctionReturn(0);
 }

@@ -3,8 +3,10 @@
  * the step's time (see timestep.h). */
 #include <math.h>
 #include "dmhs/sim.h"
-#include "dmhs/integrate.h"
+#include "dmhs/dt_limits.h"
+#include "dmhs/io.h"
 #include "dmhs/timestep.h"
+#include "dmhs/substep.h"
 #include "dmhs/csv.h"
 #include "dmhs/events.h"
 #include "dmhs/fields.h"
@@ -14,12 +16,12 @@ static const char *const substep_scheme_names[] = {"respa", "held", "substep_sch
                                                    NULL};
 
 PetscErrorCode timestep_set_from_options(sim *s) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   PetscBool safety_set, growth_set, min_set;
   PetscFunctionBeginUser;
   ts->substeps_option = 1;
-  ts->n_sub = 1;
-  ts->respa = PETSC_FALSE;
+  s->substeps.n = 1;
+  s->substeps.respa = PETSC_FALSE;
   ts->safety = DT_SAFETY_DEFAULT;
   ts->growth = DT_GROWTH_DEFAULT;
   ts->dt_min = 0;
@@ -43,7 +45,7 @@ PetscErrorCode timestep_set_from_options(sim *s) {
                             "Sub-steps of the solids' bonds and angles per step [1] (1 = off, 0 = "
                             "automatic from the ratio of the liquid's to the solids' limits)",
                             NULL, ts->substeps_option, &ts->substeps_option, NULL));
-  substep_scheme scheme = ts->respa ? SUBSTEP_RESPA : SUBSTEP_HELD;
+  substep_scheme scheme = s->substeps.respa ? SUBSTEP_RESPA : SUBSTEP_HELD;
   PetscCall(PetscOptionsEnum(
       "-solid_substeps_scheme",
       "With sub-steps: how the forces not sub-cycled (the liquid's, loads) act on the rows that "
@@ -51,15 +53,15 @@ PetscErrorCode timestep_set_from_options(sim *s) {
       "own kicks: time-reversible, r-RESPA) or held (their start-of-step value on every "
       "sub-step, as SPHinXsys)",
       NULL, substep_scheme_names, (PetscEnum)scheme, (PetscEnum *)&scheme, NULL));
-  ts->respa = scheme == SUBSTEP_RESPA ? PETSC_TRUE : PETSC_FALSE;
+  s->substeps.respa = scheme == SUBSTEP_RESPA ? PETSC_TRUE : PETSC_FALSE;
   PetscOptionsEnd();
   PetscCheck(ts->substeps_option >= 0 && ts->substeps_option <= SUBSTEPS_MAX, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
              "-solid_substeps must be in [0, %d] (got %" PetscInt_FMT "; 1 = off, 0 = automatic)",
              SUBSTEPS_MAX, ts->substeps_option);
-  ts->subcycling = ts->substeps_option != 1 ? PETSC_TRUE : PETSC_FALSE;
+  s->substeps.on = ts->substeps_option != 1 ? PETSC_TRUE : PETSC_FALSE;
   /* the held acceleration is a particle field: it must exist before the scene builds */
-  if (ts->subcycling) {
+  if (s->substeps.on) {
     PetscCall(fields_enable("a_hold"));
     PetscCall(fields_enable("substepped"));
   }
@@ -91,7 +93,7 @@ PetscErrorCode timestep_collect_limits(sim *s, dt_limits *l) {
 }
 
 double timestep_dt_for(const sim *s, PetscBool inner) {
-  return inner && s->ts.subcycling ? s->dt / (double)s->ts.n_sub : s->dt;
+  return inner && s->substeps.on ? s->dt / (double)s->substeps.n : s->dt;
 }
 
 /* The smallest limit on dt itself: the others', and (sub-cycling with a fixed
@@ -103,7 +105,7 @@ static double timestep_effective_limit(const timestep *ts, const dt_limits *l, i
   *which = -1;
   for (int k = 0; k < l->n; k++) {
     const double v = l->item[k].value;
-    if (ts->subcycling && l->item[k].inner) {
+    if (ts->substeps_option != 1 && l->item[k].inner) {
       if (v < inner_best) {
         inner_best = v;
         inner_which = k;
@@ -127,14 +129,14 @@ static double timestep_effective_limit(const timestep *ts, const dt_limits *l, i
 /* Sub-steps for the current dt: fixed, or the fewest that keep dt/N within
  * the safety fraction of the solids' smallest limit. */
 static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   double inner = INFINITY;
   int which = -1;
   PetscFunctionBeginUser;
-  if (!ts->subcycling)
+  if (!s->substeps.on)
     PetscFunctionReturn(0);
   if (ts->substeps_option > 0) {
-    ts->n_sub = ts->substeps_option;
+    s->substeps.n = ts->substeps_option;
     PetscFunctionReturn(0);
   }
   for (int k = 0; k < l->n; k++)
@@ -143,7 +145,7 @@ static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
       which = k;
     }
   if (which < 0) {
-    ts->n_sub = 1;
+    s->substeps.n = 1;
     PetscFunctionReturn(0);
   }
   const double n = ceil(s->dt / (ts->safety * inner) * (1.0 - 1e-12));
@@ -152,7 +154,7 @@ static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
              ": -solid_substeps 0 would need %g sub-steps of dt = %g s for the "
              "%s limit %g s (at most %d): lower -dt",
              s->step, n, s->dt, l->item[which].name, inner, SUBSTEPS_MAX);
-  ts->n_sub = n < 1 ? 1 : (PetscInt)n;
+  s->substeps.n = n < 1 ? 1 : (PetscInt)n;
   PetscFunctionReturn(0);
 }
 
@@ -164,7 +166,7 @@ static void timestep_note_binding(timestep *ts, const dt_limits *l) {
 }
 
 PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   int which;
   PetscFunctionBeginUser;
   ts->adaptive = s->dt <= 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -172,8 +174,8 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
              "-dt_safety, -dt_growth and -dt_min apply to the automatic time step only; with -dt "
              "%g (fixed) drop them or give -dt 0",
              s->dt);
-  ts->t_anchor = 0;
-  ts->step_anchor = 0;
+  s->t_anchor = 0;
+  s->step_anchor = 0;
   timestep_note_binding(ts, l);
   if (!ts->adaptive) {
     PetscCall(timestep_choose_substeps(s, l));
@@ -198,13 +200,13 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
 }
 
 static PetscErrorCode timestep_csv_row(sim *s) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   PetscFunctionBeginUser;
   if (!ts->csv)
     PetscFunctionReturn(0);
-  if (ts->subcycling)
+  if (s->substeps.on)
     PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s,%" PetscInt_FMT "\n",
-                      s->step, s->t, s->dt, ts->binding, ts->n_sub));
+                      s->step, s->t, s->dt, ts->binding, s->substeps.n));
   else
     PetscCall(csv_row(ts->csv, "dt.csv", "%" PetscInt_FMT ",%.17g,%.17g,%s\n", s->step, s->t, s->dt,
                       ts->binding));
@@ -216,9 +218,9 @@ static PetscErrorCode timestep_csv_row(sim *s) {
  * of its own step again, if dt changes there). */
 static PetscErrorCode timestep_open_csv(sim *s) {
   PetscFunctionBeginUser;
-  const char *header = s->ts.subcycling ? "step,t,dt,limit,substeps\n" : "step,t,dt,limit\n";
-  PetscCall(csv_open_keeping(s, "dt.csv", header, (double)s->step - 0.5, &s->ts.csv));
-  if (!s->io.restarted)
+  const char *header = s->substeps.on ? "step,t,dt,limit,substeps\n" : "step,t,dt,limit\n";
+  PetscCall(csv_open_keeping(s, "dt.csv", header, (double)s->step - 0.5, &s->ts->csv));
+  if (!s->io->restarted)
     PetscCall(timestep_csv_row(s));
   PetscFunctionReturn(0);
 }
@@ -226,7 +228,7 @@ static PetscErrorCode timestep_open_csv(sim *s) {
 /* Fixed dt: every limit the state now sets must still hold (the solids' own
  * against dt/N when sub-cycling). */
 static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   PetscFunctionBeginUser;
   for (int k = 0; k < l->n; k++) {
     const dt_limit *it = &l->item[k];
@@ -252,7 +254,7 @@ static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
 
 /* Automatic dt: the band, the growth bound and the floor; then the sub-steps. */
 static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   int which;
   PetscFunctionBeginUser;
   const double limit = timestep_effective_limit(ts, l, &which);
@@ -269,15 +271,15 @@ static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
              "%g s, driven by the %s limit %g s (%s); the run is stopped here (its last checkpoint "
              "and outputs stay valid)",
              s->step, s->t, dt, ts->dt_min, l->item[which].name, limit, l->item[which].formula);
-  const PetscInt n_sub_before = ts->n_sub;
+  const PetscInt n_sub_before = s->substeps.n;
   const PetscBool dt_changed = dt != s->dt ? PETSC_TRUE : PETSC_FALSE;
   s->dt = dt;
   PetscCall(timestep_choose_substeps(s, l));
-  if (!dt_changed && ts->n_sub == n_sub_before)
+  if (!dt_changed && s->substeps.n == n_sub_before)
     PetscFunctionReturn(0);
   if (dt_changed) {
-    ts->t_anchor = s->t;
-    ts->step_anchor = s->step;
+    s->t_anchor = s->t;
+    s->step_anchor = s->step;
   }
   ts->n_changes++;
   PetscCall(timestep_csv_row(s));
@@ -285,7 +287,7 @@ static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
 }
 
 PetscErrorCode timestep_before_step(sim *s) {
-  timestep *ts = &s->ts;
+  timestep *ts = s->ts;
   dt_limits limits;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.timestep, 0, 0, 0, 0));
@@ -296,9 +298,9 @@ PetscErrorCode timestep_before_step(sim *s) {
   if (ts->adaptive)
     PetscCall(timestep_adapt(s, &limits));
   else {
-    const PetscInt n_sub_before = ts->n_sub;
+    const PetscInt n_sub_before = s->substeps.n;
     PetscCall(timestep_choose_substeps(s, &limits));
-    if (ts->n_sub != n_sub_before)
+    if (s->substeps.n != n_sub_before)
       PetscCall(timestep_csv_row(s));
     PetscCall(timestep_check_fixed(s, &limits));
   }
@@ -309,12 +311,12 @@ PetscErrorCode timestep_before_step(sim *s) {
 void timestep_advance(sim *s) {
   s->step++;
   /* from the anchor: no round-off accumulates over the steps of one dt */
-  s->t = s->ts.t_anchor + (double)(s->step - s->ts.step_anchor) * s->dt;
+  s->t = s->t_anchor + (double)(s->step - s->step_anchor) * s->dt;
 }
 
 PetscErrorCode timestep_finish(sim *s) {
   PetscFunctionBeginUser;
-  PetscCall(csv_close(&s->ts.csv, "dt.csv"));
+  PetscCall(csv_close(&s->ts->csv, "dt.csv"));
   PetscFunctionReturn(0);
 }
 
@@ -324,12 +326,12 @@ PetscErrorCode timestep_stability_report(sim *s) {
   PetscFunctionBeginUser;
   PetscCall(timestep_collect_limits(s, &limits));
   PetscCall(timestep_choose_first(s, &limits)); /* -dt 0: the first dt */
-  if (s->ts.subcycling)
+  if (s->substeps.on)
     PetscCall(PetscPrintf(
         s->comm,
         "Stability report (pre-flight), dt = %g s, %" PetscInt_FMT
         " solid sub-steps (the solids' own limits, marked *, against dt/%" PetscInt_FMT "):\n",
-        s->dt, s->ts.n_sub, s->ts.n_sub));
+        s->dt, s->substeps.n, s->substeps.n));
   else
     PetscCall(PetscPrintf(s->comm, "Stability report (pre-flight), dt = %g s:\n", s->dt));
   for (int k = 0; k < limits.n; k++) {
@@ -338,7 +340,7 @@ PetscErrorCode timestep_stability_report(sim *s) {
     const PetscBool over = dt > l->value * (1.0 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(PetscPrintf(s->comm, "  %-18s %-48s %11.4e s  dt/limit = %6.3f%s%s\n", l->name,
                           l->formula, l->value, dt / l->value,
-                          s->ts.subcycling && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
+                          s->substeps.on && l->inner ? " *" : "", over ? "  EXCEEDED" : ""));
     problems += over;
   }
   for (int m = 0; m < s->n_modules; m++) /* the modules' own checks (e.g. SPH's support) */

@@ -17,6 +17,7 @@
  * format version, scene, particle count, and each dataset's shape and type. */
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/events.h"
 #include "h5check.h"
@@ -253,12 +254,12 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
   PetscCall(h5io_create(s->comm, tmp, &fid));
   {
     const PetscInt64 version = CHECKPOINT_FORMAT_VERSION, ranks = s->size, step = s->step,
-                     snapshot_index = s->io.snapshot_index;
+                     snapshot_index = s->io->snapshot_index;
     PetscCall(h5io_put_string(tmp, fid, "magic", CHECKPOINT_MAGIC));
     PetscCall(h5io_put_int64s(tmp, fid, "format_version", &version, 1));
     PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
-    PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
-    PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    PetscCall(h5io_put_string(tmp, fid, "scene", s->scene_name));
+    PetscCall(h5io_put_string(tmp, fid, "options", s->io->options ? s->io->options : ""));
     char *physics;
     PetscCall(options_physics(&physics));
     PetscCall(h5io_put_string(tmp, fid, "physics_options", physics));
@@ -269,10 +270,10 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_int64s(tmp, fid, "snapshot_index", &snapshot_index, 1));
     PetscCall(h5io_put_reals(tmp, fid, "t", &s->t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "dt", &s->dt, 1));
-    const PetscInt64 step_anchor = s->ts.step_anchor;
-    PetscCall(h5io_put_reals(tmp, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
+    const PetscInt64 step_anchor = s->step_anchor;
+    PetscCall(h5io_put_reals(tmp, fid, "dt_anchor_t", &s->t_anchor, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "dt_anchor_step", &step_anchor, 1));
-    const PetscInt64 n_sub = s->ts.n_sub;
+    const PetscInt64 n_sub = s->substeps.n;
     PetscCall(h5io_put_int64s(tmp, fid, "solid_substeps", &n_sub, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
     PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
@@ -360,7 +361,7 @@ static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t
   if (!n_changed)
     PetscFunctionReturn(0);
   PetscCheck(
-      s->io.restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+      s->io->restart_allow_change, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
       "-restart %s: %d physics option(s) differ from the run that wrote it: %s; restart with the "
       "checkpoint's options (its 'options' attribute), or add -restart_allow_change to continue "
       "with "
@@ -370,7 +371,7 @@ static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t
       s->comm,
       "WARNING: -restart_allow_change: continuing %s with %d changed physics option(s): %s\n", path,
       n_changed, report));
-  PetscCall(PetscStrallocpy(report, &s->io.restart_changes));
+  PetscCall(PetscStrallocpy(report, &s->io->restart_changes));
   PetscFunctionReturn(0);
 }
 
@@ -422,9 +423,9 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
              "that wrote it, or start the run afresh",
              path, version, text, DMHS_VERSION, CHECKPOINT_FORMAT_VERSION);
   PetscCall(h5io_get_string(path, fid, "scene", text, sizeof(text)));
-  PetscCheck(!strcmp(text, s->scn->name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+  PetscCheck(!strcmp(text, s->scene_name), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
              "-restart %s: written by scene '%s' but this run builds scene '%s'", path, text,
-             s->scn->name);
+             s->scene_name);
   PetscCall(checkpoint_compare_options(s, path, fid));
 
   /* the scene was built with the current options: it must hold as many particles */
@@ -435,7 +436,7 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
              "-restart %s holds %" PetscInt64_FMT " particles but scene '%s' built %" PetscInt64_FMT
              " with the current options: restart with the options of the run that wrote it (its "
              "'options' attribute)",
-             path, n_file, s->scn->name, n_built);
+             path, n_file, s->scene_name, n_built);
 
   /* rows per rank: as written on the same rank count (bitwise continuation), else
    * an even split that migration then hands to the owners */
@@ -484,25 +485,25 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
   PetscCall(h5io_get_reals(path, fid, "dt", &s->dt, 1));
   PetscCall(h5io_get_reals(path, fid, "t", &s->t, 1));
   PetscInt64 step_anchor;
-  PetscCall(h5io_get_reals(path, fid, "dt_anchor_t", &s->ts.t_anchor, 1));
+  PetscCall(h5io_get_reals(path, fid, "dt_anchor_t", &s->t_anchor, 1));
   PetscCall(h5io_get_int64s(path, fid, "dt_anchor_step", &step_anchor, 1));
-  s->ts.step_anchor = (PetscInt)step_anchor;
+  s->step_anchor = (PetscInt)step_anchor;
   PetscInt64 n_sub;
   PetscCall(h5io_get_int64s(path, fid, "solid_substeps", &n_sub, 1));
   PetscCheck(n_sub >= 1 && n_sub <= SUBSTEPS_MAX, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid solid_substeps %" PetscInt64_FMT, path, n_sub);
   /* the sub-steps of the step that wrote it, for the record of changes (dt.csv) */
-  s->ts.n_sub = (PetscInt)n_sub;
+  s->substeps.n = (PetscInt)n_sub;
   PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
   PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
-  PetscCheck(s->ts.step_anchor >= 0 && s->ts.step_anchor <= step, PETSC_COMM_SELF,
+  PetscCheck(s->step_anchor >= 0 && s->step_anchor <= step, PETSC_COMM_SELF,
              PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")",
-             path, s->ts.step_anchor, step);
+             path, s->step_anchor, step);
   PetscCheck(step >= 0 && s->dt > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid step %" PetscInt64_FMT " or dt %g", path, step, s->dt);
   s->step = (PetscInt)step;
-  s->io.snapshot_index = (PetscInt)snapshot_index;
+  s->io->snapshot_index = (PetscInt)snapshot_index;
   PetscCall(checkpoint_read_sampled(s, path, fid));
 
   /* the structure (before the modules' state, which may refer to it) */

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/csv.h"
 
 /* Is this line a data row with t (its first field) after t_keep? Header and
@@ -55,7 +56,7 @@ static int csv_truncate(const char *path, const char *tmp, double t_keep, int *f
 PetscErrorCode csv_open(sim *s, const char *name, const char *header, FILE **out) {
   /* rows at the checkpoint's time belong to the run only if its diagnostic sampled there:
    * otherwise they are the final output of a run that stopped at the checkpoint */
-  const double keep = s->io.restart_t + (s->io.csv_keep_restart_rows ? 0.5 : -0.5) * s->dt;
+  const double keep = s->io->restart_t + (s->io->csv_keep_restart_rows ? 0.5 : -0.5) * s->dt;
   PetscFunctionBeginUser;
   PetscCall(csv_open_keeping(s, name, header, keep, out));
   PetscFunctionReturn(0);
@@ -70,7 +71,7 @@ PetscErrorCode csv_open_keeping(sim *s, const char *name, const char *header, do
   if (s->rank)
     PetscFunctionReturn(0);
   PetscCall(io_output_path(s, name, path, sizeof(path)));
-  if (s->io.restarted) {
+  if (s->io->restarted) {
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     const int err = csv_truncate(path, tmp, keep, &found);
     PetscCheck(

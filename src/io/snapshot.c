@@ -3,6 +3,7 @@
  * (layout in snapshot.h). Nothing here names a field: adding a row with
  * FIELD_OUTPUT to fields.c adds it to the snapshots and the XDMF index. */
 #include "dmhs/sim.h"
+#include "dmhs/io.h"
 #include "dmhs/snapshot.h"
 #include "dmhs/events.h"
 #include "dmhs/gather.h"
@@ -109,8 +110,8 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
     PetscCall(h5io_put_int64s(tmp, fid, "dim", &dim, 1));
     PetscCall(h5io_put_int64s(tmp, fid, "n_particles", &count, 1));
     PetscCall(h5io_put_string(tmp, fid, "dmhs_version", DMHS_VERSION));
-    PetscCall(h5io_put_string(tmp, fid, "scene", s->scn->name));
-    PetscCall(h5io_put_string(tmp, fid, "options", s->io.options ? s->io.options : ""));
+    PetscCall(h5io_put_string(tmp, fid, "scene", s->scene_name));
+    PetscCall(h5io_put_string(tmp, fid, "options", s->io->options ? s->io->options : ""));
     /* the box, for post-processing across periodic boundaries, and the rest spacing */
     PetscInt64 periodic[DMHS_DIM];
     for (int k = 0; k < DMHS_DIM; k++)
@@ -119,8 +120,8 @@ PetscErrorCode snapshot_write(sim *s, PetscInt index, PetscInt64 *n_global, Pets
     PetscCall(h5io_put_reals(tmp, fid, "box_hi", s->dom.hi, DMHS_DIM));
     PetscCall(h5io_put_int64s(tmp, fid, "periodic", periodic, DMHS_DIM));
     PetscCall(h5io_put_reals(tmp, fid, "dx", &s->dx, 1));
-    for (int k = 0; k < s->io.n_snapshot_attributes; k++) {
-      const io_attribute *a = &s->io.snapshot_attributes[k];
+    for (int k = 0; k < s->io->n_snapshot_attributes; k++) {
+      const io_attribute *a = &s->io->snapshot_attributes[k];
       if (a->text[0])
         PetscCall(h5io_put_string(tmp, fid, a->name, a->text));
       else

@@ -17,12 +17,12 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/agglomeration.h"
 #include "dmhs/bond.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
 #include "dmhs/gather.h"
-#include "dmhs/integrate.h"
 
 #define AGG_CSV "clots.csv"
 
@@ -476,7 +476,7 @@ static PetscErrorCode agglomeration_set_from_options(module *self, sim *s) {
              n, AGGLOMERATION_MAX_SEEDS);
   PetscCheck(set_points || d->chooser, s->comm, PETSC_ERR_ARG_WRONG,
              "-agglomeration_seeds x1,y1,... is needed: scene '%s' does not choose seeds",
-             s->scn ? s->scn->name : "?");
+             s->scene_name);
   PetscCheck(!d->k_set || d->bond_k > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-agglomeration_bond_k must be > 0 (got %g J/m^2)", d->bond_k);
   /* the ghost width must reach a stretched clot bond (made at most R_max long) */

@@ -7,10 +7,10 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 #include "angle_iact.h"
 
 typedef struct {

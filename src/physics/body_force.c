@@ -11,7 +11,6 @@
 #include "dmhs/sim.h"
 #include "dmhs/body_force.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 
 typedef struct {
   double F[DMHS_DIM];             /* [m/s^2] */

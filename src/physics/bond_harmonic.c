@@ -5,9 +5,9 @@
  * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 #include "bond_iact.h"
 #include "virial_iact.h"
 

@@ -12,9 +12,9 @@
  * sweep (stop or warn per -preflight when dt exceeds it). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 #include "bond_iact.h"
 #include "virial_iact.h"
 

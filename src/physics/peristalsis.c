@@ -24,10 +24,10 @@
 #include <string.h>
 #include <ctype.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/fields.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 #include "dmhs/sph.h"
 #include "dmhs/bond.h"
 

@@ -19,10 +19,10 @@
  * particle that reaches r* during a step was already marked at its start. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/repulsion.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 #include "dmhs/fields.h"
 #include "dmhs/checkpoint.h"
 #include "repulsion_iact.h"
@@ -87,7 +87,7 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
   PetscOptionsEnd();
   self->solid_internal = d->substeps;
   PetscCheck(!d->bodies || fields_enabled("body"), s->comm, PETSC_ERR_ARG_INCOMP,
-             "-repulsion_bodies: scene '%s' does not number its solid bodies", s->scn->name);
+             "-repulsion_bodies: scene '%s' does not number its solid bodies", s->scene_name);
   PetscCheck(d->K >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-repulsion_k must be >= 0 (got %g J)",
              d->K);
   PetscCheck(d->rstar > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,

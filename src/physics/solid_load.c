@@ -6,10 +6,10 @@
  * potential energy -F . (x - x0) summed over tagged particles is its energy. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/fields.h"
 #include "dmhs/solid_load.h"
 #include "dmhs/events.h"
-#include "dmhs/integrate.h"
 
 typedef struct {
   double F[DMHS_DIM]; /* [N] */

@@ -6,9 +6,9 @@
 #include <stdint.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/io.h"
 #include "dmhs/body_force.h"
-#include "dmhs/integrate.h"
 #include "sph_force.h"
 
 const char *const sph_kernel_names[] = {"lucy",        "cubic", "wendland", "sph_kernel_kind",
@@ -139,7 +139,7 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCheck(
       sp->tensile_eps == 0 || s->dx > 0, s->comm, PETSC_ERR_ARG_INCOMP,
       "-sph_tensile_eps %.3g needs the scene's particle spacing, which scene %s does not set",
-      sp->tensile_eps, s->scn->name);
+      sp->tensile_eps, s->scene_name);
   /* its reference W(dx) must be inside the support */
   PetscCheck(sp->tensile_eps == 0 || s->dx < sp->h, s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_tensile_eps %.3g: the particle spacing dx = %.3g m is not inside the support "
@@ -185,14 +185,14 @@ static PetscErrorCode sph_setup(module *self, sim *s) {
   d->has_walls = n_walls > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(!d->has_walls || !d->no_walls, s->comm, PETSC_ERR_PLIB,
              "scene %s said it builds no walls (sph_set_no_walls) but built %" PetscInt_FMT,
-             s->scn->name, n_walls);
+             s->scene_name, n_walls);
   d->body = sim_find_module(s, "body_force");
   PetscCheck(sp->wall != SPH_WALL_QUADRATIC || !d->has_walls || fields_enabled("to_surface"),
              s->comm, PETSC_ERR_ARG_INCOMP,
              "-sph_wall_extrapolation quadratic needs each wall particle's vector to the wall "
              "surface, which scene %s does not provide (the channel scenes do): use "
              "-sph_wall_extrapolation adami",
-             s->scn->name);
+             s->scene_name);
   PetscCall(sph_wall_create(&d->wall));
   /* in every snapshot: what interpolating the fields needs (scripts/post/sph_grid.py) */
   PetscCall(io_snapshot_attribute_string(s, "sph_kernel", sph_kernel_names[sp->kernel]));

@@ -4,6 +4,7 @@
  * so that every pass of the solver does real work. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/modules.h"
 #include "dmhs/scenes.h"
 

@@ -7,6 +7,7 @@
  * (the diagnostic "errors", diag/errors.c). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/modules.h"
 #include "dmhs/fields.h"
 #include "dmhs/channel.h"

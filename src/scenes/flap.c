@@ -8,6 +8,7 @@
  * steps, and "flap", flap.csv at output times and flap-particles.csv at the end. */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/fields.h"
 #include "dmhs/modules.h"
 #include "dmhs/scenes.h"

@@ -27,6 +27,7 @@
  * weir is parked (intestine_post_step). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/fields.h"
 #include "dmhs/modules.h"
 #include "dmhs/scenes.h"

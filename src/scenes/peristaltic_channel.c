@@ -13,6 +13,7 @@
  * moves at up to ~1.5 c). */
 #include <math.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/modules.h"
 #include "dmhs/fields.h"
 #include "dmhs/scenes.h"

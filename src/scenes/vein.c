@@ -42,6 +42,7 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/sph.h"
 #include "dmhs/modules.h"
 #include "dmhs/neighbours.h"
 #include "dmhs/scenes.h"

@@ -79,10 +79,10 @@ static inline double fixture_energy(sim *s, double P[2]) {
 
 /* -solid_substeps n (before any particle is added): the held acceleration's field */
 static inline void fixture_substeps(sim *s, PetscInt n) {
-  s->ts.substeps_option = s->ts.n_sub = n;
-  s->ts.subcycling = n != 1 ? PETSC_TRUE : PETSC_FALSE;
+  s->substeps.n = n;
+  s->substeps.on = n != 1 ? PETSC_TRUE : PETSC_FALSE;
   fields_reset();
-  if (s->ts.subcycling) {
+  if (s->substeps.on) {
     OK(fields_enable("a_hold"));
     OK(fields_enable("substepped"));
   }
@@ -90,10 +90,10 @@ static inline void fixture_substeps(sim *s, PetscInt n) {
 
 /* One step as sim_run takes it (fixed dt, no migration). */
 static inline void fixture_step(sim *s) {
-  if (s->ts.subcycling)
+  if (s->substeps.on)
     OK(substep_mark_members(s));
   OK(integrate_first_half(s));
-  if (s->ts.subcycling)
+  if (s->substeps.on)
     OK(substep_solids(s));
   s->step++;
   s->t = s->step * s->dt;

@@ -23,10 +23,11 @@
  * module filtered out, a is zeroed as usual; one that says so and does not set them is an error. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
+#include "dmhs/sph.h"
 #include "dmhs/modules.h"
 #include "dmhs/body_force.h"
 #include "dmhs/registry.h"
-#include "dmhs/integrate.h"
 
 static sim s;
 static module *m, *sph;

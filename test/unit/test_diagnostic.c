@@ -13,6 +13,8 @@
 #include <unistd.h>
 #include "unit_common.h"
 #include "dmhs/sim.h"
+#include "dmhs/scene.h"
+#include "dmhs/io.h"
 #include "dmhs/diagnostic.h"
 #include "dmhs/checkpoint.h"
 
@@ -82,12 +84,15 @@ static diagnostic *probe_add(sim *s, const char *name, int index, diagnostic_sch
 }
 
 static scene test_scene = {.name = "test"};
+static io_state test_io;
 
 static void make_sim(sim *s) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
   s->size = 1;
   s->scn = &test_scene;
+  s->scene_name = test_scene.name;
+  s->io = &test_io;
   s->dt = 0.1;
   s->next_output_t = 0.5;
 }
@@ -182,7 +187,7 @@ static void make_particles(sim *s) {
   const double x[2] = {0.1, 0.2}, v[2] = {0, 0};
   for (int k = 0; k < 3; k++)
     OK(particles_add_owned(&s->ps, k, PTYPE_FLUID, x, v, 1.0, 1000.0, NULL));
-  s->ts.n_sub = 1;
+  s->substeps.n = 1;
 }
 
 static void test_checkpoint_round_trip(void **state) {

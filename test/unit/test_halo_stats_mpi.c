@@ -24,7 +24,6 @@
 #define WIDTH 0.1303
 
 static sim s;
-static scene scn = {.name = "unit"};
 /* the fields a refresh between builds sends (any set: ghost_bytes is theirs) */
 static const char *const refresh[] = {"x", "v_est", "rho"};
 
@@ -90,7 +89,7 @@ static void test_two_ranks(void **state) {
   assert_int_equal(MPI_Comm_size(s.comm, &s.size), 0);
   if (s.size != 2)
     fail_msg("run on 2 ranks (mpirun -n 2), not %d", (int)s.size);
-  s.scn = &scn;
+  s.scene_name = "unit";
   s.quiet = PETSC_TRUE;
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {PETSC_TRUE, PETSC_FALSE}};
   fields_reset();

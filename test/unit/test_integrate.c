@@ -20,6 +20,8 @@
  *     density, within 10 %, and keeps its amplitude with the predicted one. */
 #include "unit_common.h"
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
+#include "dmhs/sph.h"
 #include "dmhs/integrate.h"
 #include "dmhs/fields.h"
 
@@ -113,9 +115,9 @@ static void subcycled_step(PetscBool respa) {
   static const char *const sub_fields[] = {"a_hold", "substepped", NULL};
   fields_reset();
   make_sim_with(&s, SPH_DENSITY_CONTINUITY, sub_fields);
-  s.ts.subcycling = PETSC_TRUE;
-  s.ts.respa = respa;
-  s.ts.n_sub = 3;
+  s.substeps.on = PETSC_TRUE;
+  s.substeps.respa = respa;
+  s.substeps.n = 3;
   const double x0[2] = {0.1, -0.2}, v0[2] = {1.5, -0.5}, a[2] = {-3.0, 9.81}, drho = 12.0;
   const double a_hold[2] = {0.5, -2.0}; /* the forces not sub-cycled */
   /* a solid, a clot, a wall, a liquid particle, a liquid particle in contact */

@@ -29,7 +29,6 @@
 #include "mpi_check.h"
 
 static sim s;
-static scene scn = {.name = "unit"};
 
 /* Positions of the phases: 0 lattice; 1 shifted by 0.37 in x (wrapped) and mirrored in y (with
  * x periodic, METIS may cut the box along x or along y: either way particles change rank);
@@ -132,7 +131,7 @@ static void test_partition_and_migrate(void **state) {
   assert_int_equal(MPI_Comm_size(s.comm, &s.size), 0);
   if (s.size != 2)
     fail_msg("run on 2 ranks (mpirun -n 2), not %d", (int)s.size);
-  s.scn = &scn;
+  s.scene_name = "unit";
   s.quiet = PETSC_TRUE; /* no "repartitioned" line */
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {PETSC_TRUE, PETSC_FALSE}};
   s.hal.width = 0.125; /* 8 x 8 coarse cells */

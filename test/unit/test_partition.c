@@ -15,14 +15,13 @@
 #include "dmhs/partition.h"
 
 static sim s;
-static scene scn = {.name = "unit"};
 
 static void make(double lx, double ly, PetscBool periodic_x, double width) {
   OK(PetscMemzero(&s, sizeof(s)));
   s.comm = PETSC_COMM_SELF;
   s.size = 1;
   s.rank = 0;
-  s.scn = &scn;
+  s.scene_name = "unit";
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {lx, ly}, .periodic = {periodic_x, PETSC_FALSE}};
   s.hal.width = width;
   fields_reset();

@@ -19,8 +19,8 @@
 #include <stdio.h>
 #include "unit_common.h"
 #include "dmhs/sim.h"
+#include "dmhs/dt_limits.h"
 #include "dmhs/peristalsis.h"
-#include "dmhs/integrate.h"
 
 /* 3 pockets (N = 2): R = 9 rows, pocket k columns */
 static const int S_H2[9][3] = {

@@ -28,7 +28,6 @@
 #include "mpi_check.h"
 
 static sim s;
-static scene scn = {.name = "unit"};
 
 /* The structure: a bond (k, k+1) inside each row, an angle (k, k+1, k+2). */
 static PetscBool is_bond(PetscInt64 a, PetscInt64 b) {
@@ -99,7 +98,7 @@ static void test_distributed_store(void **state) {
   assert_int_equal(MPI_Comm_size(s.comm, &s.size), 0);
   if (s.size != 2)
     fail_msg("run on 2 ranks (mpirun -n 2), not %d", (int)s.size);
-  s.scn = &scn;
+  s.scene_name = "unit";
   s.quiet = PETSC_TRUE;
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {PETSC_TRUE, PETSC_FALSE}};
   OK(halo_create(&s.hal, 0.125, s.comm)); /* 8 x 8 coarse cells; bonds are 0.05 long */
