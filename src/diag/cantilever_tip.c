@@ -2,6 +2,7 @@
  * beam (cantilever_tip.h). */
 #include <math.h>
 #include "dmhs/cantilever_tip.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/solid_load.h"

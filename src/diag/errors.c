@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/sim.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/errors.h"
 #include "dmhs/gather.h"

@@ -2,6 +2,7 @@
  * (flap_metrics.h). */
 #include <math.h>
 #include "dmhs/checkpoint.h"
+#include "dmhs/diagnostics.h"
 #include "flap_strip.h"
 
 typedef struct {

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "dmhs/gather.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/csv.h"
 #include "flap_strip.h"

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <string.h>
 #include "dmhs/intestine_tracking.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/sph.h"
 #include "dmhs/body_force.h"

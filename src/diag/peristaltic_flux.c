@@ -6,6 +6,7 @@
  * is 1e-12 of the scale at any size); the maxima are order independent. */
 #include <math.h>
 #include "dmhs/peristaltic_flux.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/analytic.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"

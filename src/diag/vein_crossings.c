@@ -6,6 +6,7 @@
  * same leaflet counts as a crossing (must stay 0). */
 #include <math.h>
 #include "dmhs/checkpoint.h"
+#include "dmhs/diagnostics.h"
 #include "vein_column_bins.h"
 
 typedef struct {

@@ -31,6 +31,7 @@
 #include <math.h>
 #include <string.h>
 #include "dmhs/vein_metrics.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/sph.h"
 #include "dmhs/stress.h"

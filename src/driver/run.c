@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "dmhs/driver.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/timestep.h"
 #include "dmhs/sim.h"

@@ -28,19 +28,17 @@ TOP = "main"  # src/main.c
 HEADER_LAYERS = {
     "build_info.h": "core",  # dmhs_commit[], generated at build time (cmake/DmhsCommit.cmake)
     "module.h": "core",  # the module interface: core's force evaluation calls it (sim.c)
+    "diagnostic.h": "core",  # the diagnostic interface: io's checkpoint calls its hooks
     "scene.h": "scenes",  # the scene interface
     "scenes.h": "scenes",  # the scenes' constructors
     "driver.h": "driver",  # sim_create, sim_run, sim_destroy (src/driver/run.c)
     "flap_metrics.h": "diag",  # the flap's diagnostics (src/diag/flap_*.c)
 }
 
-# The includes that run upward today (issue 36, "the spine"). struct sim (include/dmhs/sim.h,
-# a core header) points to the upper layers' own state (io's, the driver's time-step and
-# progress state, the scene) through forward-declared structs, but it still holds the
-# registered diagnostics, whose state io's checkpoint writes and reads.
-KNOWN_VIOLATIONS = {
-    ("include/dmhs/sim.h", "include/dmhs/diagnostic.h"),  # s->diagnostics[]
-}
+# The includes that run upward today; none. Take an entry out in the commit that removes its
+# include, and add none: a lower layer reads an upper one's state through an interface of
+# its own layer (module.h, diagnostic.h) or a forward-declared struct it does not open.
+KNOWN_VIOLATIONS = set()
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 

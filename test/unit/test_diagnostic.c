@@ -1,4 +1,4 @@
-/* The diagnostic list (src/diag/diagnostic.c) and the diagnostics' part of
+/* The diagnostic list (src/diag/diagnostics.c) and the diagnostics' part of
  * checkpoints (src/io/checkpoint.c). Proves:
  *   - the schedule: every N steps (step 0 included), at output times (step 0
  *     and t within dt/2 of next_output_t), not_at_start, a diagnostic's own
@@ -15,7 +15,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/scene.h"
 #include "dmhs/io.h"
-#include "dmhs/diagnostic.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/checkpoint.h"
 
 /* what the test diagnostics did, in order: 'A' + index for a sample, 'a' + index for a finish */

@@ -1,11 +1,11 @@
-/* The list of diagnostics of a run (diagnostic.h): registration, schedule,
+/* The list of diagnostics of a run (diagnostics.h): registration, schedule,
  * sampling under per-diagnostic log events, end-of-run reports, teardown.
  * Their checkpoint groups are written and read by src/io/checkpoint.c. */
 #include <ctype.h>
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/io.h"
-#include "dmhs/diagnostic.h"
+#include "dmhs/diagnostics.h"
 #include "dmhs/events.h"
 
 PetscErrorCode diagnostic_create(const char *name, diagnostic **out) {
