@@ -51,9 +51,9 @@ PetscErrorCode bond_claim_scene_types(struct sim *s, const module *self);
  * n_given types cover n_types (one value = every type), names the option. */
 PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n_given,
                                       PetscInt n_types);
-/* Makes sure the topology has been resolved for the current positions (the
- * pre-flight report runs before the first neighbour build). */
-PetscErrorCode bond_ensure_resolved(struct sim *s);
+/* An internal error naming who asked when the topology's local lists do not exist yet: the
+ * time-step limits are asked for after the first neighbour build, and never change state. */
+PetscErrorCode bond_check_resolved(const struct sim *s, const char *who);
 /* Smallest mass among owned solid particles, over all ranks (+inf when none). */
 PetscErrorCode bond_min_solid_mass(struct sim *s, double *m);
 

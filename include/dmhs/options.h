@@ -43,11 +43,13 @@ PetscErrorCode options_get_int(PetscOptions options, const char pre[], const cha
 PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const char opt[],
                                 PetscBool *value, PetscBool *set);
 
+/* Marks an option as run control, where it is registered (after its reader): when and where
+ * output goes, how long to run, checks that do not change the state. Such an option may
+ * differ between a run and its restart, and a checkpoint does not store it. */
+PetscErrorCode options_run_control(const char *name);
 /* Every value the readers returned is recorded (the last one per option).
  * options_physics: "name value\n" lines, sorted, of the recorded options that
- * are not run control (-t_end, -output_*, -checkpoint_*, -restart*, -quiet,
- * -progress_interval, -progress_wall_interval, -dump_final, -debug_*,
- * -partition_imbalance, -preflight): what a checkpoint stores. PetscFree it. */
+ * are not marked run control: what a checkpoint stores. PetscFree it. */
 PetscErrorCode options_physics(char **text);
 /* The differences between a stored options_physics text and the current one,
  * "-name X in the checkpoint, Y now; ..." in report, and how many. */

@@ -30,6 +30,7 @@ typedef struct sim {
 
   /* run control */
   double t, dt, t_end;
+  PetscBool t_end_given; /* -t_end was given: a scene's default does not apply */
   PetscInt step;
   /* t = t_anchor + (step - step_anchor) dt: the time and step of the last dt change */
   double t_anchor;
@@ -88,6 +89,9 @@ typedef struct sim {
   struct io_state *io;
 } sim;
 
+/* A scene's default run length, in its set_from_options: t_end unless -t_end was given; the
+ * output and progress intervals left at 0 follow it (t_end/100, t_end/20). */
+void sim_default_t_end(sim *s, double t_end);
 /* The enabled module of that registry name, or NULL. */
 module *sim_find_module(const sim *s, const char *name);
 /* Which modules a force evaluation runs: those for which it is true. */

@@ -15,6 +15,7 @@ PetscErrorCode halo_check_set_from_options(sim *s) {
       "-debug_halo",
       "Check every step that the pair list equals a brute-force neighbour search (slow)", NULL,
       s->debug_halo, &s->debug_halo, NULL));
+  PetscCall(options_run_control("-debug_halo"));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }

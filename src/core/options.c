@@ -27,6 +27,9 @@ static options_entry *options_seen;
 static size_t options_n_seen, options_cap_seen, options_next_order;
 static PetscBool options_frozen; /* -help: the chosen scene's values stay */
 static const char *options_note;
+/* the options marked run control (options_run_control) */
+static char **options_marked;
+static size_t options_n_marked, options_cap_marked;
 
 static char *options_dup(const char *v) {
   return strdup(v ? v : "");
@@ -108,6 +111,11 @@ void options_forget(void) {
   free(options_seen);
   options_seen = NULL;
   options_n_seen = options_cap_seen = 0;
+  for (size_t k = 0; k < options_n_marked; k++)
+    free(options_marked[k]);
+  free(options_marked);
+  options_marked = NULL;
+  options_n_marked = options_cap_marked = 0;
   options_frozen = PETSC_FALSE;
   options_note = NULL;
 }
@@ -148,32 +156,32 @@ PetscErrorCode options_help_print(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-/* Options that may differ between a run and its restart: when and where output
- * goes, how long to run, checks and diagnostics that do not change the state. */
-static const char *const options_run_control[] = {"-t_end",
-                                                  "-output_dir",
-                                                  "-output_interval",
-                                                  "-output_snapshots",
-                                                  "-snapshot_every",
-                                                  "-progress_interval",
-                                                  "-progress_wall_interval",
-                                                  "-quiet",
-                                                  "-checkpoint_interval",
-                                                  "-checkpoint_at_end",
-                                                  "-restart",
-                                                  "-restart_allow_change",
-                                                  "-dump_final",
-                                                  "-debug_migration",
-                                                  "-debug_halo",
-                                                  "-partition_imbalance",
-                                                  "-preflight",
-                                                  "-intestine_uf_r2_min",
-                                                  "-intestine_uf_initial_waves",
-                                                  "-dmhs_traceback"};
+/* Options that may differ between a run and its restart (when and where output goes, how
+ * long to run, checks and diagnostics that do not change the state), each marked where it is
+ * registered (options_run_control). */
+
+PetscErrorCode options_run_control(const char *name) {
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < options_n_marked; k++)
+    if (!strcmp(options_marked[k], name))
+      PetscFunctionReturn(0);
+  if (options_n_marked == options_cap_marked) {
+    const size_t cap = options_cap_marked ? 2 * options_cap_marked : 32;
+    char **grown = realloc(options_marked, cap * sizeof(*grown));
+    PetscCheck(grown, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory marking option %s", name);
+    options_marked = grown;
+    options_cap_marked = cap;
+  }
+  options_marked[options_n_marked] = options_dup(name);
+  PetscCheck(options_marked[options_n_marked], PETSC_COMM_SELF, PETSC_ERR_MEM,
+             "out of memory marking option %s", name);
+  options_n_marked++;
+  PetscFunctionReturn(0);
+}
 
 static int options_is_run_control(const char *name) {
-  for (size_t k = 0; k < sizeof(options_run_control) / sizeof(options_run_control[0]); k++)
-    if (!strcmp(name, options_run_control[k]))
+  for (size_t k = 0; k < options_n_marked; k++)
+    if (!strcmp(name, options_marked[k]))
       return 1;
   return 0;
 }

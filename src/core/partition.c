@@ -48,6 +48,7 @@ PetscErrorCode partition_set_from_options(partition *p, sim *s) {
       PetscOptionsReal("-partition_imbalance",
                        "Repartition when max/mean owned particles over ranks exceeds this [1]",
                        NULL, p->imbalance_max, &p->imbalance_max, NULL));
+  PetscCall(options_run_control("-partition_imbalance"));
   PetscCall(PetscOptionsInt("-partition_interval",
                             "Steps between load-imbalance checks (0 = never repartition)", NULL,
                             p->interval, &p->interval, NULL));

@@ -4,6 +4,11 @@
 #include <string.h>
 #include "dmhs/sim.h"
 
+void sim_default_t_end(sim *s, double t_end) {
+  if (!s->t_end_given)
+    s->t_end = t_end;
+}
+
 module *sim_find_module(const sim *s, const char *name) {
   for (int m = 0; m < s->n_modules; m++)
     if (!strcmp(s->modules[m]->name, name))

@@ -17,21 +17,22 @@ PetscErrorCode progress_set_from_options(sim *s) {
   PetscCall(PetscOptionsReal("-progress_interval",
                              "Physical time between progress lines [s] (0 = t_end/20)", NULL,
                              s->progress_interval, &s->progress_interval, NULL));
+  PetscCall(options_run_control("-progress_interval"));
   PetscCall(PetscOptionsReal(
       "-progress_wall_interval",
       "Wall-clock time after which a progress line comes if none came (the first after at most "
       "30 s) [s] (0 = none: -progress_interval only)",
       NULL, pc->wall_interval, &pc->wall_interval, NULL));
+  PetscCall(options_run_control("-progress_wall_interval"));
   PetscCall(
       PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+  PetscCall(options_run_control("-quiet"));
   PetscOptionsEnd();
   PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-progress_interval must be >= 0 s (got %g)", s->progress_interval);
   PetscCheck(pc->wall_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-progress_wall_interval must be >= 0 s (got %g; 0 = no wall-clock lines)",
              pc->wall_interval);
-  if (s->progress_interval == 0)
-    s->progress_interval = s->t_end / 20;
   PetscFunctionReturn(0);
 }
 

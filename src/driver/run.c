@@ -43,15 +43,19 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscCall(registry_scene_names(names, sizeof(names)));
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
   PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
-  PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, NULL));
+  PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, &s->t_end_given));
+  PetscCall(options_run_control("-t_end"));
   PetscCall(PetscOptionsEnum(
       "-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
       preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
+  PetscCall(options_run_control("-preflight"));
   PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL,
                                s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
+  PetscCall(options_run_control("-output_dir"));
   PetscCall(PetscOptionsReal("-output_interval",
                              "Physical time between output rows/snapshots [s] (0 = t_end/100)",
                              NULL, s->output_interval, &s->output_interval, NULL));
+  PetscCall(options_run_control("-output_interval"));
   PetscCall(PetscOptionsReal(
       "-neighbour_skin",
       "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
@@ -60,6 +64,7 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscCall(PetscOptionsBool("-dmhs_traceback",
                              "On an error, PETSc's full traceback instead of the one-line message",
                              NULL, traceback, &traceback, NULL));
+  PetscCall(options_run_control("-dmhs_traceback"));
   PetscOptionsEnd();
   PetscCall(timestep_set_from_options(s));
   PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)",
@@ -68,8 +73,6 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
              "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
   PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-output_interval must be >= 0 (got %g)", s->output_interval);
-  if (s->output_interval == 0)
-    s->output_interval = s->t_end / 100;
   PetscCall(progress_set_from_options(s));
   /* run.json: how often a live run's heartbeat comes at the latest */
   s->io->heartbeat_interval = s->progress->wall_interval;
@@ -230,6 +233,11 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(registry_create_scene(scene_name, &s->scn));
   s->scene_name = s->scn->name;
   PetscCall(s->scn->set_from_options(s->scn, s));
+  /* the intervals that follow t_end, once the scene has set its default (sim_default_t_end) */
+  if (s->output_interval == 0)
+    s->output_interval = s->t_end / 100;
+  if (s->progress_interval == 0)
+    s->progress_interval = s->t_end / 20;
   for (int m = 0; m < s->n_modules; m++) {
     const module *mod = s->modules[m];
     PetscCall(mod->set_from_options(s->modules[m], s));
@@ -270,12 +278,14 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(neighbours_collect_ghost_reads(s));
 
   PetscCall(sim_view(s));
-  PetscCall(timestep_stability_report(s));
   s->next_output_t = s->output_interval;
   s->next_progress_t = s->progress_interval;
 
-  /* forces at t = 0 for the first kick */
+  /* the first neighbour build, then the limits at t = 0 (with the bonds' and angles' local
+   * lists in place: asking a module's max_dt changes nothing), then the forces at t = 0 for
+   * the first kick (the limits see no acceleration yet, as a restart's checkpoint does not) */
   PetscCall(neighbours_update(s, PETSC_TRUE));
+  PetscCall(timestep_stability_report(s));
   PetscCall(sim_compute_forces(s));
   PetscCall(integrate_check_state(s));
   PetscCall(io_restart(s)); /* io: with -restart, the checkpoint's state replaces the built one */

@@ -51,25 +51,31 @@ PetscErrorCode io_set_from_options(sim *s) {
       "-output_snapshots",
       "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
       io->snapshots, &io->snapshots, NULL));
+  PetscCall(options_run_control("-output_snapshots"));
   PetscCall(PetscOptionsInt("-snapshot_every",
                             "Write a snapshot at every Nth output time only (and at the "
                             "run's last step) [1]",
                             NULL, io->snapshot_every, &io->snapshot_every, NULL));
+  PetscCall(options_run_control("-snapshot_every"));
   PetscCall(PetscOptionsReal(
       "-checkpoint_interval",
       "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
       io->checkpoint_interval, &io->checkpoint_interval, NULL));
+  PetscCall(options_run_control("-checkpoint_interval"));
   PetscCall(PetscOptionsBool("-checkpoint_at_end",
                              "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
+  PetscCall(options_run_control("-checkpoint_at_end"));
   PetscCall(PetscOptionsString("-restart",
                                "Continue from this checkpoint file (same scene and options)", NULL,
                                io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
+  PetscCall(options_run_control("-restart"));
   PetscCall(PetscOptionsBool(
       "-restart_allow_change",
       "Let -restart continue with physics options that differ from the checkpoint's "
       "(listed in run.json)",
       NULL, io->restart_allow_change, &io->restart_allow_change, NULL));
+  PetscCall(options_run_control("-restart_allow_change"));
   PetscOptionsEnd();
   PetscCheck(io->snapshot_every >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-snapshot_every must be >= 1 (got %" PetscInt_FMT ")", io->snapshot_every);

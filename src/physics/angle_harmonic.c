@@ -182,7 +182,7 @@ static PetscErrorCode angle_max_dt(module *self, sim *s, dt_limits *l) {
   PetscFunctionBeginUser;
   if (!isfinite(d->m_min))
     PetscFunctionReturn(0);
-  PetscCall(bond_ensure_resolved(s));
+  PetscCall(bond_check_resolved(s, "angle time-step limit"));
   /* evaluated before every step: the smallest r^2/k over the angles, one root at the end
    * (a root per angle was 6 % of a membrane scene's step) */
   double r2_over_k = INFINITY;

@@ -4,7 +4,6 @@
 #include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
-#include "dmhs/neighbours.h"
 #include "dmhs/bond.h"
 
 const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
@@ -98,10 +97,12 @@ PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode bond_ensure_resolved(sim *s) {
+PetscErrorCode bond_check_resolved(const sim *s, const char *who) {
   PetscFunctionBeginUser;
-  if (!s->topo->resolved)
-    PetscCall(neighbours_rebuild(s));
+  PetscCheck(s->topo->resolved, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "%s: the bonds' and angles' local lists are asked for before the first neighbour "
+             "build",
+             who);
   PetscFunctionReturn(0);
 }
 

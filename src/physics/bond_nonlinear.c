@@ -187,7 +187,7 @@ static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) 
   PetscFunctionBeginUser;
   if (!isfinite(p->m_min))
     PetscFunctionReturn(0);
-  PetscCall(bond_ensure_resolved(s));
+  PetscCall(bond_check_resolved(s, "bond nonlinear time-step limit"));
   /* per type, at that type's largest current stretch (rest when it has none here) */
   for (PetscInt ty = 0; ty < s->topo->n_bond_types; ty++)
     local = PetscMin(local, bond_nonlinear_limit(p, ty, 0.0));

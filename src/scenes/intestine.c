@@ -55,7 +55,6 @@ typedef struct {
 
 static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   intestine_data *c = self->data;
-  PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene intestine (colon with peristalsis)", NULL);
   PetscCall(PetscOptionsInt("-intestine_pockets", "Number of pockets N + 1 [1]", NULL, c->n_pockets,
@@ -95,9 +94,11 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
                              "u_F: the least-squares line of x_F over the whole waves fits when "
                              "its R^2 reaches this, else u_F is the initial slope [1]",
                              NULL, c->uf_r2_min, &c->uf_r2_min, NULL));
+  PetscCall(options_run_control("-intestine_uf_r2_min"));
   PetscCall(PetscOptionsInt("-intestine_uf_initial_waves",
                             "u_F's initial slope: the line over the first this many waves [1]",
                             NULL, c->uf_initial_waves, &c->uf_initial_waves, NULL));
+  PetscCall(options_run_control("-intestine_uf_initial_waves"));
   PetscOptionsEnd();
   PetscCheck(c->uf_r2_min > 0 && c->uf_r2_min <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-intestine_uf_r2_min must lie in (0, 1] (got %g)", c->uf_r2_min);
@@ -148,12 +149,6 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
    * it worse (the PET miniature at c0 = 10 m/s: 4.8 % by 1 s, 0.18 % with this;
    * doc/validation.md, "Intestine") */
   sp->density_predict = PETSC_TRUE;
-  /* the automatic dt unless -dt is given: the repulsion's limit (0.035 dx
-   * [s/m], 8.8e-6 s at dx = 2.5e-4 m) lies below the published 1e-5 s, and
-   * the bonds' limit tightens as the membrane stretches under the wave */
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
-  if (!set)
-    s->dt = 0.0;
   PetscCall(fields_enable("tracer")); /* the white (and red) liquid */
   PetscCall(fields_enable("x0"));     /* tracking's displacements, the segments' centres */
   PetscCall(modules_enable(s, "body_force", &c->body));

@@ -33,28 +33,6 @@ typedef struct {
   PetscInt nx;            /* columns along the wavelength */
 } peristaltic_data;
 
-/* The run's length and output defaults, when not given: two wave periods. */
-static PetscErrorCode peristaltic_run_defaults(sim *s, double period) {
-  PetscBool set;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-t_end", &set));
-  if (!set) {
-    s->t_end = 2.0 * period;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-output_interval", &set));
-    if (!set)
-      s->output_interval = s->t_end / 100;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-progress_interval", &set));
-    if (!set)
-      s->progress_interval = s->t_end / 20;
-  }
-  /* the automatic dt unless -dt is given: the viscous and the sound-speed limits both
-   * follow the options above */
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-dt", &set));
-  if (!set)
-    s->dt = 0.0;
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode peristaltic_set_from_options(scene *self, sim *s) {
   peristaltic_data *c = self->data;
   PetscBool lambda_set, nu_set;
@@ -135,8 +113,8 @@ static PetscErrorCode peristaltic_set_from_options(scene *self, sim *s) {
   sp->p_background = corrected ? 0.0 : dp;
   /* density diffusion: without it the narrow throat of a deep wave tears the liquid */
   sp->delta = 0.02;
-  PetscCall(fields_enable("to_surface")); /* kept on the moving surface by wall_wave */
-  PetscCall(peristaltic_run_defaults(s, c->lambda / c->c));
+  PetscCall(fields_enable("to_surface"));       /* kept on the moving surface by wall_wave */
+  sim_default_t_end(s, 2.0 * c->lambda / c->c); /* two wave periods */
   PetscFunctionReturn(0);
 }
 
