@@ -7,7 +7,7 @@
  * candidate picks its closest clot particle that has fewer than max_bonds clot
  * bonds, each such clot particle picks its closest candidate (ties: the lower
  * gid); a mutual pair bonds when its draw u(seed, event, gid pair) < P. A
- * joined particle becomes PTYPE_CLOT, bonded harmonically (bond_clot.c) with
+ * joined particle becomes PTYPE_CLOT, bonded harmonically (bond_harmonic_forces) with
  * the rest length it had at creation. The bonds are added to the topology
  * collectively (topology_add_bonds) under the bond type this module claims, so
  * they travel with their particles, weigh in the partition, appear in snapshots
@@ -62,11 +62,5 @@ typedef PetscErrorCode (*agglomeration_seed_fn)(struct sim *s, void *ctx, PetscI
 PetscErrorCode agglomeration_set_defaults(module *m, double rmax, double start);
 PetscErrorCode agglomeration_set_seed_chooser(module *m, agglomeration_seed_fn fn, void *ctx);
 PetscErrorCode agglomeration_module_create(module **m);
-
-/* bond_clot.c: the clot bonds' force U = K (r - r0_b)^2 with each bond's own
- * rest length (topology bond_r0), their virial and energy (this rank's share). */
-PetscErrorCode bond_clot_compute(struct sim *s, const void *owner, double K);
-PetscErrorCode bond_clot_virial(struct sim *s, const void *owner, double K, double (*W)[3]);
-double bond_clot_energy_local(struct sim *s, const void *owner, double K);
 
 #endif

@@ -30,6 +30,21 @@ typedef struct bond_params {
 } bond_params;
 
 PetscErrorCode bond_harmonic_module_create(module **m);
+
+/* The bonds one harmonic law U = K (r - r0)^2 acts on: the local bond entries of the types
+ * `owner` claimed, K per bond type, r0 per bond type or (r0 NULL) each bond's own rest length
+ * (topology bond_r0: the clots', so that a bond starts unstressed). bond_harmonic.c. */
+typedef struct harmonic_bonds {
+  const void *owner;
+  const double *k;  /* [TOPOLOGY_MAX_TYPES] J/m^2 */
+  const double *r0; /* [TOPOLOGY_MAX_TYPES] m, or NULL */
+} harmonic_bonds;
+/* Adds the law's accelerations to a. */
+PetscErrorCode bond_harmonic_forces(struct sim *s, const harmonic_bonds *set);
+/* Adds the bonds' pair virial to W (per row: xx, yy, xy). */
+PetscErrorCode bond_harmonic_virial_add(struct sim *s, const harmonic_bonds *set, double (*W)[3]);
+/* The bonds' energy over all ranks (each entry by its weight). Collective. */
+PetscErrorCode bond_harmonic_energy_of(struct sim *s, const harmonic_bonds *set, double *e);
 PetscErrorCode bond_nonlinear_module_create(module **m);
 /* The scene's defaults for every bond type (rmax ignored by the harmonic style);
  * call after solid_modules_enable, before the options pass of the modules. */

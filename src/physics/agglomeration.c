@@ -512,27 +512,37 @@ static PetscErrorCode agglomeration_setup(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode agglomeration_compute(module *self, sim *s) {
+/* the clot bonds: the harmonic law with each bond's own rest length */
+static harmonic_bonds agglomeration_bonds(const module *self, double k[TOPOLOGY_MAX_TYPES]) {
   const agg_data *d = self->data;
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
+    k[t] = d->bond_k;
+  return (harmonic_bonds){.owner = self, .k = k, .r0 = NULL};
+}
+
+static PetscErrorCode agglomeration_compute(module *self, sim *s) {
+  double k[TOPOLOGY_MAX_TYPES];
+  const harmonic_bonds set = agglomeration_bonds(self, k);
   PetscFunctionBeginUser;
   if (s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE] > 0)
-    PetscCall(bond_clot_compute(s, self, d->bond_k));
+    PetscCall(bond_harmonic_forces(s, &set));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode agglomeration_virial(module *self, sim *s, double (*W)[3]) {
-  const agg_data *d = self->data;
+  double k[TOPOLOGY_MAX_TYPES];
+  const harmonic_bonds set = agglomeration_bonds(self, k);
   PetscFunctionBeginUser;
   if (s->topo->n_bonds_of_type[AGGLOMERATION_BOND_TYPE] > 0)
-    PetscCall(bond_clot_virial(s, self, d->bond_k, W));
+    PetscCall(bond_harmonic_virial_add(s, &set, W));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode agglomeration_energy(module *self, sim *s, double *e) {
-  const agg_data *d = self->data;
-  const double local = bond_clot_energy_local(s, self, d->bond_k);
+  double k[TOPOLOGY_MAX_TYPES];
+  const harmonic_bonds set = agglomeration_bonds(self, k);
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscCall(bond_harmonic_energy_of(s, &set, e));
   PetscFunctionReturn(0);
 }
 

@@ -1,7 +1,8 @@
 /* Module bond_harmonic: U = K (r - r0)^2 per bond (doc/theory.md), K [J/m^2] and r0 [m]
  * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. It claims the
  * scene's bond types at setup; types another module claimed (the clots',
- * agglomeration.c) are left to that module.
+ * agglomeration.c) are left to that module, which applies the same law to them through
+ * bond_harmonic_forces with each bond's own rest length.
  * Time-step limit: SPRING_DT_FACTOR sqrt(m/k) with k = U'' = 2K. */
 #include <math.h>
 #include "dmhs/sim.h"
@@ -34,26 +35,28 @@ static PetscErrorCode bond_harmonic_setup(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
-  const bond_params *p = self->data;
+/* r0 of local bond entry b: its type's, or (r0 NULL) its own (topology bond_r0) */
+#define HARMONIC_R0(set, t, b, ty) ((set)->r0 ? (set)->r0[ty] : (t)->bond_r0[(t)->bond_index[b]])
+
+PetscErrorCode bond_harmonic_forces(sim *s, const harmonic_bonds *set) {
   const topology *t = s->topo;
   particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(events.bond, 0, 0, 0, 0));
   const PetscInt nb = t->n_bond_local;
   const PetscInt(*restrict bond)[2] = (const PetscInt(*)[2])t->bond;
   const PetscInt *restrict type = t->bond_ltype;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
   const double *restrict mass = ps->mass;
-  const double *restrict K = p->k, *restrict R0 = p->r0;
+  const double *restrict K = set->k;
   double(*restrict a)[2] = ps->a;
   const void *const *restrict owner = t->bond_owner;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
-    if (owner[ty] != self) /* another module's bond type (the clots') */
+    if (owner[ty] != set->owner) /* another module's bond type */
       continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    const double fr = bond_harmonic_iact(K[ty], R0[ty], sqrt(d[0] * d[0] + d[1] * d[1]));
+    const double fr =
+        bond_harmonic_iact(K[ty], HARMONIC_R0(set, t, b, ty), sqrt(d[0] * d[0] + d[1] * d[1]));
     const double fi = fr / mass[i], fj = fr / mass[j];
     a[i][0] += fi * d[0];
     a[i][1] += fi * d[1];
@@ -61,41 +64,67 @@ static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
     a[j][1] -= fj * d[1];
   }
   PetscCall(PetscLogFlops(20.0 * (double)nb));
-  PetscCall(PetscLogEventEnd(events.bond, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 /* Pair virial of each bond: both ends get -1/2 d (x) F_i with F_i = fr d. */
-static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3]) {
-  const bond_params *p = self->data;
+PetscErrorCode bond_harmonic_virial_add(sim *s, const harmonic_bonds *set, double (*W)[3]) {
   const topology *t = s->topo;
   const particles *ps = &s->ps;
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != self)
+    if (t->bond_owner[ty] != set->owner)
       continue;
     const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double fr = bond_harmonic_iact(p->k[ty], p->r0[ty], hypot(d[0], d[1]));
+    const double fr = bond_harmonic_iact(set->k[ty], HARMONIC_R0(set, t, b, ty), hypot(d[0], d[1]));
     virial_pair_add(W, i, j, fr, d);
   }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) {
-  const bond_params *p = self->data;
+PetscErrorCode bond_harmonic_energy_of(sim *s, const harmonic_bonds *set, double *e) {
   const topology *t = s->topo;
   const particles *ps = &s->ps;
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt b = 0; b < t->n_bond_local; b++) {
     const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != self)
+    if (t->bond_owner[ty] != set->owner)
       continue;
     const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
-    local += t->bond_weight[b] * bond_harmonic_energy(p->k[ty], p->r0[ty], r);
+    local += t->bond_weight[b] * bond_harmonic_energy(set->k[ty], HARMONIC_R0(set, t, b, ty), r);
   }
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
+  PetscFunctionReturn(0);
+}
+
+/* the module's bonds: the types it claimed, K and r0 per type */
+static harmonic_bonds bond_harmonic_set(const module *self) {
+  const bond_params *p = self->data;
+  return (harmonic_bonds){.owner = self, .k = p->k, .r0 = p->r0};
+}
+
+static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
+  const harmonic_bonds set = bond_harmonic_set(self);
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.bond, 0, 0, 0, 0));
+  PetscCall(bond_harmonic_forces(s, &set));
+  PetscCall(PetscLogEventEnd(events.bond, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_virial(module *self, sim *s, double (*W)[3]) {
+  const harmonic_bonds set = bond_harmonic_set(self);
+  PetscFunctionBeginUser;
+  PetscCall(bond_harmonic_virial_add(s, &set, W));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode bond_harmonic_energy_sum(module *self, sim *s, double *e) {
+  const harmonic_bonds set = bond_harmonic_set(self);
+  PetscFunctionBeginUser;
+  PetscCall(bond_harmonic_energy_of(s, &set, e));
   PetscFunctionReturn(0);
 }
 

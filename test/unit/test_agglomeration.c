@@ -1,4 +1,4 @@
-/* Clot agglomeration (src/physics/agglomeration.c, bond_clot.c): the pairing
+/* Clot agglomeration (src/physics/agglomeration.c; its bonds through bond_harmonic.c): the pairing
  * rules (mutual closest choice, at most one new bond per particle per event,
  * at most max_bonds per clot particle, probability P), the counter-based
  * random numbers (a pair's draw depends only on seed, event and the gid pair:
@@ -185,8 +185,12 @@ static void new_bond(const double xa[2], const double xb[2], double shift, doubl
   const PetscInt nr = s->ps.n_owned + s->ps.n_ghost;
   for (PetscInt i = 0; i < nr; i++)
     s->ps.a[i][0] = s->ps.a[i][1] = 0;
-  OK(bond_clot_compute(s, &clot_module, 8000));
-  *energy = bond_clot_energy_local(s, &clot_module, 8000);
+  double k[TOPOLOGY_MAX_TYPES];
+  for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
+    k[t] = 8000;
+  const harmonic_bonds clots = {.owner = &clot_module, .k = k, .r0 = NULL};
+  OK(bond_harmonic_forces(s, &clots));
+  OK(bond_harmonic_energy_of(s, &clots, energy));
   *amax = 0;
   for (PetscInt i = 0; i < s->ps.n_owned; i++)
     *amax = PetscMax(*amax, hypot(s->ps.a[i][0], s->ps.a[i][1]));
