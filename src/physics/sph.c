@@ -121,7 +121,8 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   PetscCall(PetscOptionsEnum(
       "-sph_force_sweep",
       "Momentum sweep [1]: auto (the vectorised sweep over cell ranges where it applies: an "
-      "AVX-512 build, no kernel correction, Lucy or Wendland; else the pair list), pairs, or "
+      "AVX-512 or AVX2 build, no kernel correction, Lucy or Wendland; else the pair list), pairs, "
+      "or "
       "cells; both give the same bits",
       NULL, sph_sweep_names, (PetscEnum)sp->sweep, (PetscEnum *)&sp->sweep, NULL));
   PetscCall(PetscOptionsBool(

@@ -181,13 +181,13 @@ PetscErrorCode sph_force_compute(sim *s, const sph_params *sp, sph_force_work *w
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.sph_force, 0, 0, 0, 0));
   const PetscInt n = ps->n_owned + ps->n_ghost;
-  PetscCheck(
-      sp->sweep != SPH_SWEEP_CELLS || (!corr && sph_force_cells_applies(sp)), s->comm,
-      PETSC_ERR_ARG_INCOMP, "-sph_force_sweep cells: %s",
-      !sph_force_cells_available()
-          ? "this build has no AVX-512 (configure with -DDMHS_NATIVE=ON on a machine that has it)"
-          : "it needs no kernel correction and the Lucy or Wendland kernel; use "
-            "-sph_force_sweep auto or pairs");
+  PetscCheck(sp->sweep != SPH_SWEEP_CELLS || (!corr && sph_force_cells_applies(sp)), s->comm,
+             PETSC_ERR_ARG_INCOMP, "-sph_force_sweep cells: %s",
+             !sph_force_cells_available()
+                 ? "this build has neither AVX-512 nor AVX2 (configure with -DDMHS_NATIVE=ON on a "
+                   "machine that has one)"
+                 : "it needs no kernel correction and the Lucy or Wendland kernel; use "
+                   "-sph_force_sweep auto or pairs");
   if (!corr && sph_force_cells_applies(sp)) {
     if (!work->cells)
       PetscCall(PetscNew(&work->cells));

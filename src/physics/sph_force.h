@@ -41,7 +41,7 @@ static inline const double (*sph_viscous_velocity(const particles *ps,
 }
 /* flops of one pair inside h (-log_view) */
 double sph_force_flops_per_pair(int continuity, int artificial, int diffusion, int corrected);
-/* sph_force_cells.c: the same sweep over cell ranges with AVX-512, bitwise equal to the
+/* sph_force_cells.c: the same sweep over cell ranges with AVX-512 or AVX2, bitwise equal to the
  * pair-list sweep. Its copy of the fields in cell order, one row of cells in each of two slots:
  * x, y, v_visc (2), v_est (2), p/rho^2, 1/rho, m, rho, a (2), d rho/dt, sqrt(mu_i + mu_j)/rho,
  * and per row the pair flags. */
