@@ -134,7 +134,7 @@ int main(int argc, char **argv) {
   }
   /* rank 0's console, copied into <output_dir>/dmhs.log once that exists (sim_create) */
   PetscCall(console_log_start(PETSC_COMM_WORLD));
-  PetscCall(PetscOptionsGetBool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
+  PetscCall(options_get_bool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
   if (traceback)
     PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
   if (help_only)

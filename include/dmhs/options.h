@@ -1,11 +1,10 @@
 /* Checked option readers: every value is validated where it is read, by name.
  *
- * This header (included by dmhs/sim.h, so by every module and scene) redirects
- * PETSc's readers used inside PetscOptionsBegin/End (PetscOptionsReal, Int,
- * Bool, String, Enum, RealArray, StringArray) and the direct getters
- * (PetscOptionsGetReal, GetInt, GetBool) to the options_* functions below.
- * Each looks at the option's text in the database first and refuses, in one
- * line naming the option, the value and what is allowed:
+ * Modules and scenes read their options with the options_read_* macros below inside
+ * PetscOptionsBegin/End (the arguments of PETSc's PetscOptionsReal, Int, Bool, String,
+ * Enum, RealArray, StringArray) and with options_get_* outside it (those of
+ * PetscOptionsGetReal, GetInt, GetBool). Each looks at the option's text in the database
+ * first and refuses, in one line naming the option, the value and what is allowed:
  *   - an option given without a value where one is needed (`-dt` last on the line);
  *   - a real that is not a number (`-dt garbage`) or not finite (inf, nan);
  *   - an integer that is not one (`-channel_nx 2.5`) or out of range;
@@ -13,8 +12,8 @@
  *   - an enumeration value not in its list;
  *   - an array with more values than the option takes (`-body_force 1e-4,0,0`)
  *     or with a bad element;
- * then calls PETSc's reader. Modules keep calling the PETSc names; ranges
- * (h > 0, ...) stay with the module that knows them. src/core/options.c. */
+ * then calls PETSc's reader and records the value (-help, checkpoints). Ranges (h > 0, ...)
+ * stay with the module that knows them. src/core/options.c. */
 #ifndef DMHS_OPTIONS_H
 #define DMHS_OPTIONS_H
 #include <petscsys.h>
@@ -68,27 +67,20 @@ void options_help_freeze(const char *note);
  * "-name <value as this run would use it>  description". */
 PetscErrorCode options_help_print(MPI_Comm comm);
 
-#undef PetscOptionsReal
-#undef PetscOptionsInt
-#undef PetscOptionsBool
-#undef PetscOptionsString
-#undef PetscOptionsEnum
-#undef PetscOptionsRealArray
-#undef PetscOptionsStringArray
-#define PetscOptionsReal(a, b, c, d, e, f) options_real(PetscOptionsObject, a, b, c, d, e, f)
-#define PetscOptionsInt(a, b, c, d, e, f)                                                          \
-  options_int(PetscOptionsObject, a, b, c, d, e, f, PETSC_MIN_INT, PETSC_MAX_INT)
-#define PetscOptionsBool(a, b, c, d, e, f) options_bool(PetscOptionsObject, a, b, c, d, e, f)
-#define PetscOptionsString(a, b, c, d, e, f, g)                                                    \
-  options_string(PetscOptionsObject, a, b, c, d, e, f, g)
-#define PetscOptionsEnum(a, b, c, d, e, f, g) options_enum(PetscOptionsObject, a, b, c, d, e, f, g)
-#define PetscOptionsRealArray(a, b, c, d, e, f)                                                    \
-  options_real_array(PetscOptionsObject, a, b, c, d, e, f)
-#define PetscOptionsStringArray(a, b, c, d, e, f)                                                  \
-  options_string_array(PetscOptionsObject, a, b, c, d, e, f)
-/* function-like macros over PETSc's functions; options.c calls the originals as (name)(...) */
-#define PetscOptionsGetReal(a, b, c, d, e) options_get_real(a, b, c, d, e)
-#define PetscOptionsGetInt(a, b, c, d, e)  options_get_int(a, b, c, d, e)
-#define PetscOptionsGetBool(a, b, c, d, e) options_get_bool(a, b, c, d, e)
+/* Inside PetscOptionsBegin/End, with the arguments of PETSc's reader of the same kind */
+#define options_read_real(opt, text, man, current, value, set)                                     \
+  options_real(PetscOptionsObject, opt, text, man, current, value, set)
+#define options_read_int(opt, text, man, current, value, set)                                      \
+  options_int(PetscOptionsObject, opt, text, man, current, value, set, PETSC_MIN_INT, PETSC_MAX_INT)
+#define options_read_bool(opt, text, man, current, value, set)                                     \
+  options_bool(PetscOptionsObject, opt, text, man, current, value, set)
+#define options_read_string(opt, text, man, current, value, len, set)                              \
+  options_string(PetscOptionsObject, opt, text, man, current, value, len, set)
+#define options_read_enum(opt, text, man, list, current, value, set)                               \
+  options_enum(PetscOptionsObject, opt, text, man, list, current, value, set)
+#define options_read_real_array(opt, text, man, value, n, set)                                     \
+  options_real_array(PetscOptionsObject, opt, text, man, value, n, set)
+#define options_read_string_array(opt, text, man, value, n, set)                                   \
+  options_string_array(PetscOptionsObject, opt, text, man, value, n, set)
 
 #endif

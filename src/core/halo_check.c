@@ -11,7 +11,7 @@
 PetscErrorCode halo_check_set_from_options(sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Halo check", NULL);
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-debug_halo",
       "Check every step that the pair list equals a brute-force neighbour search (slow)", NULL,
       s->debug_halo, &s->debug_halo, NULL));

@@ -23,9 +23,9 @@ PetscErrorCode migrate_set_from_options(migrate_check *m, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Migration", NULL);
   PetscCall(
-      PetscOptionsBool("-debug_migration",
-                       "Check every step that the global particle count and id set are unchanged",
-                       NULL, m->enabled, &m->enabled, NULL));
+      options_read_bool("-debug_migration",
+                        "Check every step that the global particle count and id set are unchanged",
+                        NULL, m->enabled, &m->enabled, NULL));
   PetscCall(options_run_control("-debug_migration"));
   PetscOptionsEnd();
   PetscFunctionReturn(0);

@@ -461,72 +461,80 @@ static PetscErrorCode options_check_bool(MPI_Comm comm, const char opt[], const 
           text);
 }
 
-PetscErrorCode options_real(PetscOptionItems *po, const char opt[], const char text[],
-                            const char man[], PetscReal current, PetscReal *value, PetscBool *set) {
+PetscErrorCode options_real(PetscOptionItems *PetscOptionsObject, const char opt[],
+                            const char text[], const char man[], PetscReal current,
+                            PetscReal *value, PetscBool *set) {
   const char *raw;
   PetscBool found;
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found) {
-    PetscCall(options_need_value(po->comm, opt, raw, "a finite real number", text));
-    PetscCall(options_check_real(po->comm, opt, raw, raw, "a finite real number", text));
+    PetscCall(options_need_value(PetscOptionsObject->comm, opt, raw, "a finite real number", text));
+    PetscCall(
+        options_check_real(PetscOptionsObject->comm, opt, raw, raw, "a finite real number", text));
   }
-  PetscCall(PetscOptionsReal_Private(po, opt, text, man, current, value, set));
-  PetscCall(options_record_real(po, opt, text, value, 1, 1));
+  PetscCall(PetscOptionsReal(opt, text, man, current, value, set));
+  PetscCall(options_record_real(PetscOptionsObject, opt, text, value, 1, 1));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_int(PetscOptionItems *po, const char opt[], const char text[],
-                           const char man[], PetscInt current, PetscInt *value, PetscBool *set,
-                           PetscInt lb, PetscInt ub) {
+PetscErrorCode options_int(PetscOptionItems *PetscOptionsObject, const char opt[],
+                           const char text[], const char man[], PetscInt current, PetscInt *value,
+                           PetscBool *set, PetscInt lb, PetscInt ub) {
   const char *raw;
   PetscBool found;
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found)
-    PetscCall(options_check_int(po->comm, opt, raw, lb, ub, text));
-  PetscCall(PetscOptionsInt_Private(po, opt, text, man, current, value, set, lb, ub));
+    PetscCall(options_check_int(PetscOptionsObject->comm, opt, raw, lb, ub, text));
+  PetscCall(PetscOptionsRangeInt(opt, text, man, current, value, set, lb, ub));
   {
     char v[32];
     snprintf(v, sizeof(v), "%" PetscInt_FMT, *value);
-    PetscCall(options_record(po, opt, text, v, v));
+    PetscCall(options_record(PetscOptionsObject, opt, text, v, v));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_bool(PetscOptionItems *po, const char opt[], const char text[],
-                            const char man[], PetscBool current, PetscBool *value, PetscBool *set) {
+PetscErrorCode options_bool(PetscOptionItems *PetscOptionsObject, const char opt[],
+                            const char text[], const char man[], PetscBool current,
+                            PetscBool *value, PetscBool *set) {
   const char *raw;
   PetscBool found;
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found)
-    PetscCall(options_check_bool(po->comm, opt, raw, text));
-  PetscCall(PetscOptionsBool_Private(po, opt, text, man, current, value, set));
-  PetscCall(options_record(po, opt, text, *value ? "true" : "false", *value ? "true" : "false"));
+    PetscCall(options_check_bool(PetscOptionsObject->comm, opt, raw, text));
+  PetscCall(PetscOptionsBool(opt, text, man, current, value, set));
+  PetscCall(options_record(PetscOptionsObject, opt, text, *value ? "true" : "false",
+                           *value ? "true" : "false"));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_string(PetscOptionItems *po, const char opt[], const char text[],
-                              const char man[], const char current[], char *value, size_t len,
-                              PetscBool *set) {
+PetscErrorCode options_string(PetscOptionItems *PetscOptionsObject, const char opt[],
+                              const char text[], const char man[], const char current[],
+                              char *value, size_t len, PetscBool *set) {
   const char *raw;
   PetscBool found;
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found) {
-    PetscCall(options_need_value(po->comm, opt, raw, "a text value", text));
-    PetscCheck(strlen(raw) < len, po->comm, PETSC_ERR_ARG_SIZ, "%s %s: longer than %zu characters",
-               opt, raw, len - 1);
+    PetscCall(options_need_value(PetscOptionsObject->comm, opt, raw, "a text value", text));
+    PetscCheck(strlen(raw) < len, PetscOptionsObject->comm, PETSC_ERR_ARG_SIZ,
+               "%s %s: longer than %zu characters", opt, raw, len - 1);
   }
-  PetscCall(PetscOptionsString_Private(po, opt, text, man, current, value, len, set));
-  PetscCall(options_record(po, opt, text, value, value[0] ? value : "none"));
+  PetscCall(PetscOptionsString(opt, text, man, current, value, len, set));
+  PetscCall(options_record(PetscOptionsObject, opt, text, value, value[0] ? value : "none"));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char text[],
-                            const char man[], const char *const *list, PetscEnum current,
-                            PetscEnum *value, PetscBool *set) {
+PetscErrorCode options_enum(PetscOptionItems *PetscOptionsObject, const char opt[],
+                            const char text[], const char man[], const char *const *list,
+                            PetscEnum current, PetscEnum *value, PetscBool *set) {
   const char *raw;
   PetscBool found;
   char choices[256] = "";
@@ -540,43 +548,45 @@ PetscErrorCode options_enum(PetscOptionItems *po, const char opt[], const char t
       PetscCall(strbuf_cat(choices, sizeof(choices), ", "));
     PetscCall(strbuf_cat(choices, sizeof(choices), list[k]));
   }
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found) {
     char takes[300];
     snprintf(takes, sizeof(takes), "one of %s", choices);
-    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
+    PetscCall(options_need_value(PetscOptionsObject->comm, opt, raw, takes, text));
     int k = 0;
     while (k < n && strcasecmp(raw, list[k]))
       k++;
-    PetscCheck(k < n, po->comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+    PetscCheck(k < n, PetscOptionsObject->comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
                "%s %s: unknown value; %s takes %s (%s)", opt, raw, opt, takes, text);
   }
-  PetscCall(PetscOptionsEnum_Private(po, opt, text, man, list, current, value, set));
+  PetscCall(PetscOptionsEnum(opt, text, man, list, current, value, set));
   {
     const char *v = (int)*value >= 0 && (int)*value < n ? list[*value] : "?";
     char described[600];
     snprintf(described, sizeof(described), "%s; one of %s", text, choices);
-    PetscCall(options_record(po, opt, described, v, v));
+    PetscCall(options_record(PetscOptionsObject, opt, described, v, v));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const char text[],
-                                  const char man[], PetscReal value[], PetscInt *n,
-                                  PetscBool *set) {
+PetscErrorCode options_real_array(PetscOptionItems *PetscOptionsObject, const char opt[],
+                                  const char text[], const char man[], PetscReal value[],
+                                  PetscInt *n, PetscBool *set) {
   const char *raw;
   PetscBool found;
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found) {
     char takes[96];
     snprintf(takes, sizeof(takes), "up to %d finite real numbers separated by commas", (int)*n);
-    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
-    PetscCall(options_check_list(po->comm, opt, raw, *n, 0, text));
+    PetscCall(options_need_value(PetscOptionsObject->comm, opt, raw, takes, text));
+    PetscCall(options_check_list(PetscOptionsObject->comm, opt, raw, *n, 0, text));
   }
   const PetscInt nmax = *n;
   PetscBool given;
-  PetscCall(PetscOptionsRealArray_Private(po, opt, text, man, value, n, &given));
+  PetscCall(PetscOptionsRealArray(opt, text, man, value, n, &given));
   if (set)
     *set = given;
   if (!given)
@@ -587,29 +597,31 @@ PetscErrorCode options_real_array(PetscOptionItems *po, const char opt[], const 
   if (!given && nmax > 3) /* zeros or copies of the value before */
     while (n_shown > 1 && (value[n_shown - 1] == 0 || value[n_shown - 1] == value[n_shown - 2]))
       n_shown--;
-  PetscCall(options_record_real(po, opt, text, value, *n, n_shown));
+  PetscCall(options_record_real(PetscOptionsObject, opt, text, value, *n, n_shown));
   if (!given)
     *n = 0;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], const char text[],
-                                    const char man[], char *value[], PetscInt *n, PetscBool *set) {
+PetscErrorCode options_string_array(PetscOptionItems *PetscOptionsObject, const char opt[],
+                                    const char text[], const char man[], char *value[], PetscInt *n,
+                                    PetscBool *set) {
   const char *raw;
   PetscBool found;
   char v[1024] = ""; /* the values as recorded, joined by commas */
   PetscFunctionBeginUser;
-  PetscCall(options_raw(po->options, po->prefix, opt, &raw, &found));
+  PetscCall(
+      options_raw(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &raw, &found));
   if (found) {
     char takes[96];
     snprintf(takes, sizeof(takes), "up to %d names separated by commas", (int)*n);
-    PetscCall(options_need_value(po->comm, opt, raw, takes, text));
-    PetscCall(options_check_list(po->comm, opt, raw, *n, 1, text));
-    PetscCheck(strlen(raw) < sizeof(v), po->comm, PETSC_ERR_ARG_SIZ,
+    PetscCall(options_need_value(PetscOptionsObject->comm, opt, raw, takes, text));
+    PetscCall(options_check_list(PetscOptionsObject->comm, opt, raw, *n, 1, text));
+    PetscCheck(strlen(raw) < sizeof(v), PetscOptionsObject->comm, PETSC_ERR_ARG_SIZ,
                "%s %s: longer than %zu characters", opt, raw, sizeof(v) - 1);
   }
   PetscBool given;
-  PetscCall(PetscOptionsStringArray_Private(po, opt, text, man, value, n, &given));
+  PetscCall(PetscOptionsStringArray(opt, text, man, value, n, &given));
   if (set)
     *set = given;
   {
@@ -618,7 +630,8 @@ PetscErrorCode options_string_array(PetscOptionItems *po, const char opt[], cons
         PetscCall(strbuf_cat(v, sizeof(v), ","));
       PetscCall(strbuf_cat(v, sizeof(v), value[k]));
     }
-    PetscCall(options_record(po, opt, text, given ? v : "(default)", given ? v : "default"));
+    PetscCall(options_record(PetscOptionsObject, opt, text, given ? v : "(default)",
+                             given ? v : "default"));
   }
   PetscFunctionReturn(0);
 }
@@ -634,7 +647,7 @@ PetscErrorCode options_get_real(PetscOptions options, const char pre[], const ch
     PetscCall(
         options_check_real(PETSC_COMM_SELF, opt, raw, raw, "a finite real number", "see -help"));
   }
-  PetscCall((PetscOptionsGetReal)(options, pre, opt, value, set));
+  PetscCall(PetscOptionsGetReal(options, pre, opt, value, set));
   PetscFunctionReturn(0);
 }
 
@@ -647,7 +660,7 @@ PetscErrorCode options_get_int(PetscOptions options, const char pre[], const cha
   if (found)
     PetscCall(
         options_check_int(PETSC_COMM_SELF, opt, raw, PETSC_MIN_INT, PETSC_MAX_INT, "see -help"));
-  PetscCall((PetscOptionsGetInt)(options, pre, opt, value, set));
+  PetscCall(PetscOptionsGetInt(options, pre, opt, value, set));
   PetscFunctionReturn(0);
 }
 
@@ -659,6 +672,6 @@ PetscErrorCode options_get_bool(PetscOptions options, const char pre[], const ch
   PetscCall(options_raw(options, pre, opt, &raw, &found));
   if (found)
     PetscCall(options_check_bool(PETSC_COMM_SELF, opt, raw, "see -help"));
-  PetscCall((PetscOptionsGetBool)(options, pre, opt, value, set));
+  PetscCall(PetscOptionsGetBool(options, pre, opt, value, set));
   PetscFunctionReturn(0);
 }

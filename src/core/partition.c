@@ -45,13 +45,13 @@ PetscErrorCode partition_set_from_options(partition *p, sim *s) {
   p->interval = 100;
   PetscOptionsBegin(s->comm, NULL, "Domain decomposition (partition)", NULL);
   PetscCall(
-      PetscOptionsReal("-partition_imbalance",
-                       "Repartition when max/mean owned particles over ranks exceeds this [1]",
-                       NULL, p->imbalance_max, &p->imbalance_max, NULL));
+      options_read_real("-partition_imbalance",
+                        "Repartition when max/mean owned particles over ranks exceeds this [1]",
+                        NULL, p->imbalance_max, &p->imbalance_max, NULL));
   PetscCall(options_run_control("-partition_imbalance"));
-  PetscCall(PetscOptionsInt("-partition_interval",
-                            "Steps between load-imbalance checks (0 = never repartition)", NULL,
-                            p->interval, &p->interval, NULL));
+  PetscCall(options_read_int("-partition_interval",
+                             "Steps between load-imbalance checks (0 = never repartition)", NULL,
+                             p->interval, &p->interval, NULL));
   PetscOptionsEnd();
   PetscCheck(p->imbalance_max >= 1.0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-partition_imbalance must be >= 1 (got %g)", p->imbalance_max);

@@ -35,9 +35,9 @@ PetscErrorCode errors_set_from_options(errors_times *times, sim *s) {
     times->n = 3;
   }
   PetscOptionsBegin(s->comm, NULL, "Error against the series solution", NULL);
-  PetscCall(PetscOptionsRealArray("-error_report_times",
-                                  "Times at which errors and profiles are reported [s]", NULL,
-                                  times->t, &n, &set));
+  PetscCall(options_read_real_array("-error_report_times",
+                                    "Times at which errors and profiles are reported [s]", NULL,
+                                    times->t, &n, &set));
   PetscOptionsEnd();
   if (set)
     times->n = n;

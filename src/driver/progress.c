@@ -14,18 +14,18 @@ PetscErrorCode progress_set_from_options(sim *s) {
   PetscFunctionBeginUser;
   pc->wall_interval = PROGRESS_WALL_INTERVAL_DEFAULT;
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
-  PetscCall(PetscOptionsReal("-progress_interval",
-                             "Physical time between progress lines [s] (0 = t_end/20)", NULL,
-                             s->progress_interval, &s->progress_interval, NULL));
+  PetscCall(options_read_real("-progress_interval",
+                              "Physical time between progress lines [s] (0 = t_end/20)", NULL,
+                              s->progress_interval, &s->progress_interval, NULL));
   PetscCall(options_run_control("-progress_interval"));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real(
       "-progress_wall_interval",
       "Wall-clock time after which a progress line comes if none came (the first after at most "
       "30 s) [s] (0 = none: -progress_interval only)",
       NULL, pc->wall_interval, &pc->wall_interval, NULL));
   PetscCall(options_run_control("-progress_wall_interval"));
   PetscCall(
-      PetscOptionsBool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+      options_read_bool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
   PetscCall(options_run_control("-quiet"));
   PetscOptionsEnd();
   PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -42,28 +42,29 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscFunctionBeginUser;
   PetscCall(registry_scene_names(names, sizeof(names)));
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
-  PetscCall(PetscOptionsString("-scene", names, NULL, scene_name, scene_name, len, NULL));
-  PetscCall(PetscOptionsReal("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, &s->t_end_given));
+  PetscCall(options_read_string("-scene", names, NULL, scene_name, scene_name, len, NULL));
+  PetscCall(
+      options_read_real("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, &s->t_end_given));
   PetscCall(options_run_control("-t_end"));
-  PetscCall(PetscOptionsEnum(
+  PetscCall(options_read_enum(
       "-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
       preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
   PetscCall(options_run_control("-preflight"));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for every output file", NULL,
-                               s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
+  PetscCall(options_read_string("-output_dir", "Directory for every output file", NULL,
+                                s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
   PetscCall(options_run_control("-output_dir"));
-  PetscCall(PetscOptionsReal("-output_interval",
-                             "Physical time between output rows/snapshots [s] (0 = t_end/100)",
-                             NULL, s->output_interval, &s->output_interval, NULL));
+  PetscCall(options_read_real("-output_interval",
+                              "Physical time between output rows/snapshots [s] (0 = t_end/100)",
+                              NULL, s->output_interval, &s->output_interval, NULL));
   PetscCall(options_run_control("-output_interval"));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real(
       "-neighbour_skin",
       "Verlet skin as a fraction of the longest interaction reach [1] (0 = rebuild ghosts "
       "and pairs every step)",
       NULL, s->skin_ratio, &s->skin_ratio, NULL));
-  PetscCall(PetscOptionsBool("-dmhs_traceback",
-                             "On an error, PETSc's full traceback instead of the one-line message",
-                             NULL, traceback, &traceback, NULL));
+  PetscCall(options_read_bool("-dmhs_traceback",
+                              "On an error, PETSc's full traceback instead of the one-line message",
+                              NULL, traceback, &traceback, NULL));
   PetscCall(options_run_control("-dmhs_traceback"));
   PetscOptionsEnd();
   PetscCall(timestep_set_from_options(s));

@@ -26,27 +26,28 @@ PetscErrorCode timestep_set_from_options(sim *s) {
   ts->growth = DT_GROWTH_DEFAULT;
   ts->dt_min = 0;
   PetscOptionsBegin(s->comm, NULL, "dmhs time stepping", NULL);
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real(
       "-dt",
       "Time step [s] (0 = automatic: follows -dt_safety x the smallest stability limit, "
       "re-evaluated every step)",
       NULL, s->dt, &s->dt, NULL));
-  PetscCall(PetscOptionsReal("-dt_safety", "With -dt 0: dt as a fraction of the smallest limit [1]",
-                             NULL, ts->safety, &ts->safety, &safety_set));
-  PetscCall(PetscOptionsReal("-dt_growth",
-                             "With -dt 0: largest growth of dt from one step to the next [1]", NULL,
-                             ts->growth, &ts->growth, &growth_set));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real("-dt_safety",
+                              "With -dt 0: dt as a fraction of the smallest limit [1]", NULL,
+                              ts->safety, &ts->safety, &safety_set));
+  PetscCall(options_read_real("-dt_growth",
+                              "With -dt 0: largest growth of dt from one step to the next [1]",
+                              NULL, ts->growth, &ts->growth, &growth_set));
+  PetscCall(options_read_real(
       "-dt_min",
       "With -dt 0: the run stops when dt would fall below this [s] (0 = 1e-3 x the first "
       "automatic dt)",
       NULL, ts->dt_min, &ts->dt_min, &min_set));
-  PetscCall(PetscOptionsInt("-solid_substeps",
-                            "Sub-steps of the solids' bonds and angles per step [1] (1 = off, 0 = "
-                            "automatic from the ratio of the liquid's to the solids' limits)",
-                            NULL, ts->substeps_option, &ts->substeps_option, NULL));
+  PetscCall(options_read_int("-solid_substeps",
+                             "Sub-steps of the solids' bonds and angles per step [1] (1 = off, 0 = "
+                             "automatic from the ratio of the liquid's to the solids' limits)",
+                             NULL, ts->substeps_option, &ts->substeps_option, NULL));
   substep_scheme scheme = s->substeps.respa ? SUBSTEP_RESPA : SUBSTEP_HELD;
-  PetscCall(PetscOptionsEnum(
+  PetscCall(options_read_enum(
       "-solid_substeps_scheme",
       "With sub-steps: how the forces not sub-cycled (the liquid's, loads) act on the rows that "
       "move on them [1]: respa (half a step's worth at each end of the step, as the liquid's "

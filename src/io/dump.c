@@ -14,9 +14,9 @@
 PetscErrorCode dump_set_from_options(sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Final-state dump", NULL);
-  PetscCall(PetscOptionsString("-dump_final",
-                               "Write gid-sorted final particle states to this CSV file", NULL,
-                               s->dump_final, s->dump_final, sizeof(s->dump_final), NULL));
+  PetscCall(options_read_string("-dump_final",
+                                "Write gid-sorted final particle states to this CSV file", NULL,
+                                s->dump_final, s->dump_final, sizeof(s->dump_final), NULL));
   PetscCall(options_run_control("-dump_final"));
   PetscOptionsEnd();
   PetscFunctionReturn(0);

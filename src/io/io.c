@@ -47,30 +47,30 @@ PetscErrorCode io_set_from_options(sim *s) {
   io->last_checkpoint_step = -1;
   io->csv_keep_restart_rows = PETSC_TRUE;
   PetscOptionsBegin(s->comm, NULL, "Output, checkpoints and restart", NULL);
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-output_snapshots",
       "Write <output_dir>/snap_NNNNNN.h5 and particles.xdmf at every -output_interval", NULL,
       io->snapshots, &io->snapshots, NULL));
   PetscCall(options_run_control("-output_snapshots"));
-  PetscCall(PetscOptionsInt("-snapshot_every",
-                            "Write a snapshot at every Nth output time only (and at the "
-                            "run's last step) [1]",
-                            NULL, io->snapshot_every, &io->snapshot_every, NULL));
+  PetscCall(options_read_int("-snapshot_every",
+                             "Write a snapshot at every Nth output time only (and at the "
+                             "run's last step) [1]",
+                             NULL, io->snapshot_every, &io->snapshot_every, NULL));
   PetscCall(options_run_control("-snapshot_every"));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real(
       "-checkpoint_interval",
       "Physical time between checkpoints to <output_dir>/checkpoint.h5 [s] (0 = never)", NULL,
       io->checkpoint_interval, &io->checkpoint_interval, NULL));
   PetscCall(options_run_control("-checkpoint_interval"));
-  PetscCall(PetscOptionsBool("-checkpoint_at_end",
-                             "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
-                             io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
+  PetscCall(options_read_bool("-checkpoint_at_end",
+                              "Write <output_dir>/checkpoint.h5 when the run reaches -t_end", NULL,
+                              io->checkpoint_at_end, &io->checkpoint_at_end, NULL));
   PetscCall(options_run_control("-checkpoint_at_end"));
-  PetscCall(PetscOptionsString("-restart",
-                               "Continue from this checkpoint file (same scene and options)", NULL,
-                               io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
+  PetscCall(options_read_string(
+      "-restart", "Continue from this checkpoint file (same scene and options)", NULL,
+      io->restart_file, io->restart_file, sizeof(io->restart_file), NULL));
   PetscCall(options_run_control("-restart"));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-restart_allow_change",
       "Let -restart continue with physics options that differ from the checkpoint's "
       "(listed in run.json)",

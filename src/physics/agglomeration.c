@@ -430,29 +430,29 @@ static PetscErrorCode agglomeration_set_from_options(module *self, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL,
                     "Clot agglomeration: bonds made at run time (module agglomeration)", NULL);
-  PetscCall(PetscOptionsReal("-agglomeration_interval",
-                             "Physical time between agglomeration events [s]", NULL, d->interval,
-                             &d->interval, NULL));
-  PetscCall(PetscOptionsReal("-agglomeration_start",
-                             "Time the seeds are placed [s] (default: one interval)", NULL,
-                             d->start, &d->start, &start_given));
-  PetscCall(PetscOptionsReal("-agglomeration_rmax", "Capture radius R_max [m]", NULL, d->rmax,
-                             &d->rmax, NULL));
-  PetscCall(PetscOptionsReal("-agglomeration_probability",
-                             "Probability P that a chosen pair bonds [1]", NULL, d->probability,
-                             &d->probability, NULL));
-  PetscCall(PetscOptionsInt("-agglomeration_max_bonds", "Most clot bonds per clot particle [1]",
-                            NULL, d->max_bonds, &d->max_bonds, NULL));
-  PetscCall(PetscOptionsInt("-agglomeration_seed", "Seed of the counter-based random numbers [1]",
-                            NULL, d->rng_seed, &d->rng_seed, NULL));
-  PetscCall(PetscOptionsRealArray(
+  PetscCall(options_read_real("-agglomeration_interval",
+                              "Physical time between agglomeration events [s]", NULL, d->interval,
+                              &d->interval, NULL));
+  PetscCall(options_read_real("-agglomeration_start",
+                              "Time the seeds are placed [s] (default: one interval)", NULL,
+                              d->start, &d->start, &start_given));
+  PetscCall(options_read_real("-agglomeration_rmax", "Capture radius R_max [m]", NULL, d->rmax,
+                              &d->rmax, NULL));
+  PetscCall(options_read_real("-agglomeration_probability",
+                              "Probability P that a chosen pair bonds [1]", NULL, d->probability,
+                              &d->probability, NULL));
+  PetscCall(options_read_int("-agglomeration_max_bonds", "Most clot bonds per clot particle [1]",
+                             NULL, d->max_bonds, &d->max_bonds, NULL));
+  PetscCall(options_read_int("-agglomeration_seed", "Seed of the counter-based random numbers [1]",
+                             NULL, d->rng_seed, &d->rng_seed, NULL));
+  PetscCall(options_read_real_array(
       "-agglomeration_seeds",
       "Seed points x1,y1,x2,y2,... [m]: the nearest liquid particle to each starts a clot "
       "(default: chosen by the scene)",
       NULL, d->points, &n, &set_points));
-  PetscCall(PetscOptionsReal("-agglomeration_bond_k",
-                             "Clot bond stiffness K [J/m^2] (default: the scene's bond K)", NULL,
-                             d->bond_k, &d->bond_k, &d->k_set));
+  PetscCall(options_read_real("-agglomeration_bond_k",
+                              "Clot bond stiffness K [J/m^2] (default: the scene's bond K)", NULL,
+                              d->bond_k, &d->bond_k, &d->k_set));
   PetscOptionsEnd();
   d->n_points = set_points ? n : 0;
   d->start_set = d->start_set || start_given ? PETSC_TRUE : PETSC_FALSE;

@@ -60,14 +60,14 @@ static PetscErrorCode angle_set_from_options(module *self, sim *s) {
   PetscOptionsBegin(s->comm, NULL,
                     "Harmonic angles U = k_a (theta - theta0)^2 (module angle_harmonic)", NULL);
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-angle_k",
-                                  "Angle stiffness k_a [J], one value or one per angle type", NULL,
-                                  d->k, &n, &set));
+  PetscCall(options_read_real_array("-angle_k",
+                                    "Angle stiffness k_a [J], one value or one per angle type",
+                                    NULL, d->k, &n, &set));
   d->n_k = set ? n : 0;
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-angle_theta0",
-                                  "Rest angle theta0 [deg], one value or one per angle type", NULL,
-                                  d->theta0_deg, &n, &set));
+  PetscCall(options_read_real_array("-angle_theta0",
+                                    "Rest angle theta0 [deg], one value or one per angle type",
+                                    NULL, d->theta0_deg, &n, &set));
   d->n_theta0 = set ? n : 0;
   PetscOptionsEnd();
   /* the far end of an angle is two bonds from its owned anchor */

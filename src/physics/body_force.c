@@ -74,20 +74,21 @@ static PetscErrorCode body_force_set_from_options(module *self, sim *s) {
   PetscBool set_types;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Body force on the liquid (module body_force)", NULL);
-  PetscCall(PetscOptionsRealArray("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F, &n,
-                                  &set));
-  PetscCall(PetscOptionsReal("-body_force_amplitude",
-                             "Drive amplitude g0 along x [m/s^2]: g0 sin(2 pi t/T) with "
-                             "-body_force_period T, else constant "
-                             "(same as -body_force g0,0)",
-                             NULL, amplitude, &amplitude, &set_amplitude));
-  PetscCall(PetscOptionsReal("-body_force_period", "Period T of F sin(2 pi t/T) [s] (0 = constant)",
-                             NULL, d->period, &d->period, NULL));
-  PetscCall(PetscOptionsReal("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity,
-                             NULL));
-  PetscCall(PetscOptionsStringArray("-body_force_types",
-                                    "Particle types the body force acts on: fluid, solid, clot [1]",
-                                    NULL, types, &n_types, &set_types));
+  PetscCall(options_read_real_array("-body_force", "Body acceleration Fx,Fy [m/s^2]", NULL, d->F,
+                                    &n, &set));
+  PetscCall(options_read_real("-body_force_amplitude",
+                              "Drive amplitude g0 along x [m/s^2]: g0 sin(2 pi t/T) with "
+                              "-body_force_period T, else constant "
+                              "(same as -body_force g0,0)",
+                              NULL, amplitude, &amplitude, &set_amplitude));
+  PetscCall(options_read_real("-body_force_period",
+                              "Period T of F sin(2 pi t/T) [s] (0 = constant)", NULL, d->period,
+                              &d->period, NULL));
+  PetscCall(options_read_real("-gravity", "Gravity along -y [m/s^2]", NULL, d->gravity, &d->gravity,
+                              NULL));
+  PetscCall(options_read_string_array(
+      "-body_force_types", "Particle types the body force acts on: fluid, solid, clot [1]", NULL,
+      types, &n_types, &set_types));
   PetscOptionsEnd();
   if (set_types) {
     for (int t = 0; t < PTYPE_COUNT; t++)

@@ -13,12 +13,12 @@ PetscErrorCode bond_options_k_r0(PetscOptionItems *PetscOptionsObject, bond_para
   PetscInt n = TOPOLOGY_MAX_TYPES;
   PetscBool set;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsRealArray("-bond_k", k_help, NULL, p->k, &n, &set));
+  PetscCall(options_read_real_array("-bond_k", k_help, NULL, p->k, &n, &set));
   p->n_k = set ? n : 0;
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_r0",
-                                  "Bond rest length r0 [m], one value or one per bond type", NULL,
-                                  p->r0, &n, &set));
+  PetscCall(options_read_real_array("-bond_r0",
+                                    "Bond rest length r0 [m], one value or one per bond type", NULL,
+                                    p->r0, &n, &set));
   p->n_r0 = set ? n : 0;
   PetscFunctionReturn(0);
 }
@@ -120,11 +120,11 @@ PetscErrorCode solid_modules_enable(sim *s, bond_style style) {
   PetscBool include = s->topo ? s->topo->special_include : PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Solids: bonds, angles and exclusions", NULL);
-  PetscCall(PetscOptionsEnum(
+  PetscCall(options_read_enum(
       "-bond_style",
       "Bond potential: harmonic K (r-r0)^2 or nonlinear k_b (r-r0)^2/(r_max^2-(r-r0)^2)", NULL,
       bond_style_names, (PetscEnum)style, (PetscEnum *)&style, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-special_bonds_include",
       "Keep bonded 1-2 and 1-3 partners in SPH and repulsion sums (default: excluded, as "
       "LAMMPS special_bonds lj/coul 0 0 1 angle yes)",

@@ -34,9 +34,9 @@ static PetscErrorCode bond_nonlinear_set_from_options(module *self, sim *s) {
   PetscCall(bond_options_k_r0(PetscOptionsObject, p,
                               "Bond energy scale k_b [J], one value or one per bond type"));
   n = TOPOLOGY_MAX_TYPES;
-  PetscCall(PetscOptionsRealArray("-bond_rmax",
-                                  "Largest stretch |r - r0| = r_max [m] (the run stops there)",
-                                  NULL, p->rmax, &n, &set));
+  PetscCall(options_read_real_array("-bond_rmax",
+                                    "Largest stretch |r - r0| = r_max [m] (the run stops there)",
+                                    NULL, p->rmax, &n, &set));
   p->n_rmax = set ? n : 0;
   PetscOptionsEnd();
   double reach = 0;

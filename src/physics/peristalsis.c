@@ -130,31 +130,31 @@ static PetscErrorCode peristalsis_set_from_options(module *self, sim *s) {
   PetscCall(fields_enable("x0"));      /* the supports' anchors */
   PetscOptionsBegin(s->comm, NULL, "Peristaltic wave on the membrane segments (module peristalsis)",
                     NULL);
-  PetscCall(PetscOptionsReal("-peristalsis_tw", "Sub-period t_w [s]; wave period T_w = (2N+5) t_w",
-                             NULL, d->t_w, &d->t_w, NULL));
-  PetscCall(PetscOptionsInt("-peristalsis_h",
-                            "Squeezing sub-periods H (2 = original wave, 5 = new wave) [1]", NULL,
-                            d->H, &d->H, NULL));
-  PetscCall(PetscOptionsInt("-peristalsis_waves", "Number of waves (0 = repeat until -t_end) [1]",
-                            NULL, d->waves, &d->waves, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_delay",
-                             "Time before the first wave (the liquid settles) [s]", NULL, d->delay,
-                             &d->delay, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_force",
-                             "Wave force F per membrane particle at a segment's centre [N]", NULL,
-                             d->force, &d->force, NULL));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real("-peristalsis_tw", "Sub-period t_w [s]; wave period T_w = (2N+5) t_w",
+                              NULL, d->t_w, &d->t_w, NULL));
+  PetscCall(options_read_int("-peristalsis_h",
+                             "Squeezing sub-periods H (2 = original wave, 5 = new wave) [1]", NULL,
+                             d->H, &d->H, NULL));
+  PetscCall(options_read_int("-peristalsis_waves", "Number of waves (0 = repeat until -t_end) [1]",
+                             NULL, d->waves, &d->waves, NULL));
+  PetscCall(options_read_real("-peristalsis_delay",
+                              "Time before the first wave (the liquid settles) [s]", NULL, d->delay,
+                              &d->delay, NULL));
+  PetscCall(options_read_real("-peristalsis_force",
+                              "Wave force F per membrane particle at a segment's centre [N]", NULL,
+                              d->force, &d->force, NULL));
+  PetscCall(options_read_real(
       "-peristalsis_support",
       "Support spring k_s per membrane particle towards its initial position [N/m]", NULL,
       d->support, &d->support, NULL));
-  PetscCall(PetscOptionsReal("-peristalsis_damping",
-                             "Damping rate gamma on membrane particles [1/s]", NULL, d->damping,
-                             &d->damping, NULL));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real("-peristalsis_damping",
+                              "Damping rate gamma on membrane particles [1/s]", NULL, d->damping,
+                              &d->damping, NULL));
+  PetscCall(options_read_real(
       "-peristalsis_ramp",
       "Switching time of the force between sub-periods, fraction of t_w (smoothstep) [1]", NULL,
       d->ramp, &d->ramp, NULL));
-  PetscCall(PetscOptionsString(
+  PetscCall(options_read_string(
       "-peristalsis_schedule",
       "File of the 0/+1/-1 schedule: one row per sub-period, one column per pocket", NULL, d->file,
       d->file, sizeof(d->file), NULL));

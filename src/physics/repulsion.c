@@ -67,18 +67,18 @@ static PetscErrorCode repulsion_set_from_options(module *self, sim *s) {
       s->comm, NULL,
       "Solid/wall-fluid repulsion f = K[(r* / r)^p1 - (r* / r)^p2] r_vec/r^2 (module repulsion)",
       NULL);
-  PetscCall(PetscOptionsReal("-repulsion_k", "Repulsion strength K [J]", NULL, d->K, &d->K, NULL));
-  PetscCall(PetscOptionsReal("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar,
-                             &d->rstar, NULL));
-  PetscCall(PetscOptionsInt("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL,
-                            d->p1, &d->p1, NULL));
-  PetscCall(PetscOptionsInt("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL,
-                            d->p2, &d->p2, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_real("-repulsion_k", "Repulsion strength K [J]", NULL, d->K, &d->K, NULL));
+  PetscCall(options_read_real("-repulsion_rstar", "Repulsion range r* [m]", NULL, d->rstar,
+                              &d->rstar, NULL));
+  PetscCall(options_read_int("-repulsion_p1", "Repulsive exponent p1 [1] (4 or 12 usual)", NULL,
+                             d->p1, &d->p1, NULL));
+  PetscCall(options_read_int("-repulsion_p2", "Attractive exponent p2 [1] (2 or 6 usual)", NULL,
+                             d->p2, &d->p2, NULL));
+  PetscCall(options_read_bool(
       "-repulsion_bodies",
       "Also repel non-fluid particles of different solid bodies (scenes that number bodies)", NULL,
       d->bodies, &d->bodies, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-repulsion_substeps",
       "With -solid_substeps other than 1: evaluate the repulsion on the solid sub-steps and move "
       "the liquid particles in contact on them (multi-rate contact: its limit bounds the "

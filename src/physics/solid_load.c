@@ -49,12 +49,12 @@ static PetscErrorCode solid_load_set_from_options(module *self, sim *s) {
   PetscCall(fields_enable("load")); /* which particles carry the load */
   PetscCall(fields_enable("x0"));   /* the load's work, from the initial positions */
   PetscOptionsBegin(s->comm, NULL, "Point load and damping on solids (module solid_load)", NULL);
-  PetscCall(PetscOptionsRealArray("-solid_load_force",
-                                  "Point load Fx,Fy [N] shared by the marked particles (tip)", NULL,
-                                  d->F, &n, &set));
-  PetscCall(PetscOptionsReal("-solid_damping",
-                             "Viscous damping rate gamma [1/s] on solid particles (a -= gamma v)",
-                             NULL, d->gamma, &d->gamma, NULL));
+  PetscCall(options_read_real_array("-solid_load_force",
+                                    "Point load Fx,Fy [N] shared by the marked particles (tip)",
+                                    NULL, d->F, &n, &set));
+  PetscCall(options_read_real("-solid_damping",
+                              "Viscous damping rate gamma [1/s] on solid particles (a -= gamma v)",
+                              NULL, d->gamma, &d->gamma, NULL));
   PetscOptionsEnd();
   PetscCheck(!set || n == DMHS_DIM, s->comm, PETSC_ERR_ARG_SIZ,
              "-solid_load_force takes %d components Fx,Fy (got %d)", DMHS_DIM, (int)n);

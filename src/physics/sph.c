@@ -67,43 +67,43 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
   sph_params *sp = &((sph_data *)self->data)->params;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "SPH liquid (module sph)", NULL);
-  PetscCall(PetscOptionsEnum("-sph_kernel", "Kernel: lucy, cubic (B-spline), wendland (C2)", NULL,
-                             sph_kernel_names, (PetscEnum)sp->kernel, (PetscEnum *)&sp->kernel,
-                             NULL));
-  PetscCall(PetscOptionsReal("-sph_h", "Kernel support radius h [m] (W = 0 for r >= h)", NULL,
-                             sp->h, &sp->h, NULL));
+  PetscCall(options_read_enum("-sph_kernel", "Kernel: lucy, cubic (B-spline), wendland (C2)", NULL,
+                              sph_kernel_names, (PetscEnum)sp->kernel, (PetscEnum *)&sp->kernel,
+                              NULL));
+  PetscCall(options_read_real("-sph_h", "Kernel support radius h [m] (W = 0 for r >= h)", NULL,
+                              sp->h, &sp->h, NULL));
+  PetscCall(options_read_real("-sph_rho0", "Reference density [kg/m^3]", NULL, sp->rho0, &sp->rho0,
+                              NULL));
   PetscCall(
-      PetscOptionsReal("-sph_rho0", "Reference density [kg/m^3]", NULL, sp->rho0, &sp->rho0, NULL));
+      options_read_real("-sph_c0", "Reference sound speed [m/s]", NULL, sp->c0, &sp->c0, NULL));
   PetscCall(
-      PetscOptionsReal("-sph_c0", "Reference sound speed [m/s]", NULL, sp->c0, &sp->c0, NULL));
-  PetscCall(
-      PetscOptionsReal("-sph_nu", "Kinematic viscosity [m^2/s]", NULL, sp->nu, &sp->nu, NULL));
-  PetscCall(PetscOptionsEnum(
+      options_read_real("-sph_nu", "Kinematic viscosity [m^2/s]", NULL, sp->nu, &sp->nu, NULL));
+  PetscCall(options_read_enum(
       "-sph_eos", "Equation of state: tait, linear (c^2 rho), linear_shifted (c^2 (rho - rho0))",
       NULL, sph_eos_names, (PetscEnum)sp->eos, (PetscEnum *)&sp->eos, NULL));
-  PetscCall(PetscOptionsEnum("-sph_density", "Density: continuity (d rho/dt) or summation", NULL,
-                             sph_density_names, (PetscEnum)sp->density, (PetscEnum *)&sp->density,
-                             NULL));
-  PetscCall(PetscOptionsReal("-sph_av_alpha", "Monaghan artificial viscosity alpha [1] (0 = off)",
-                             NULL, sp->av_alpha, &sp->av_alpha, NULL));
-  PetscCall(PetscOptionsReal("-sph_av_beta", "Monaghan artificial viscosity beta [1]", NULL,
-                             sp->av_beta, &sp->av_beta, NULL));
-  PetscCall(PetscOptionsReal("-sph_p_background",
-                             "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b "
-                             "(suppresses tensile voids)",
-                             NULL, sp->p_background, &sp->p_background, NULL));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_enum("-sph_density", "Density: continuity (d rho/dt) or summation", NULL,
+                              sph_density_names, (PetscEnum)sp->density, (PetscEnum *)&sp->density,
+                              NULL));
+  PetscCall(options_read_real("-sph_av_alpha", "Monaghan artificial viscosity alpha [1] (0 = off)",
+                              NULL, sp->av_alpha, &sp->av_alpha, NULL));
+  PetscCall(options_read_real("-sph_av_beta", "Monaghan artificial viscosity beta [1]", NULL,
+                              sp->av_beta, &sp->av_beta, NULL));
+  PetscCall(options_read_real("-sph_p_background",
+                              "Background pressure p_b [Pa] added to the EOS, p = EOS(rho) + p_b "
+                              "(suppresses tensile voids)",
+                              NULL, sp->p_background, &sp->p_background, NULL));
+  PetscCall(options_read_real(
       "-sph_delta",
       "Density diffusion delta [1] of the continuity equation (delta-SPH, Molteni & "
       "Colagrossi 2009; 0 = off, 0.1 usual)",
       NULL, sp->delta, &sp->delta, NULL));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real(
       "-sph_tensile_eps",
       "Artificial pressure against the tensile instability [1] (Monaghan 2000): where p < 0 a "
       "pair repulsion eps |p|/rho^2 (W(r)/W(dx))^4 keeps particles under tension from pairing "
       "up (0 = off, 0.2 usual)",
       NULL, sp->tensile_eps, &sp->tensile_eps, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-sph_kernel_correction",
       "Corrected operators [1]: pressure gradient sum_j V_j (p_j - p_i) L_i grad W (exact for "
       "linear "
@@ -112,20 +112,20 @@ static PetscErrorCode sph_set_from_options(module *self, sim *s) {
       "viscous term nu lap v exact for quadratic v, on any particle arrangement with a full "
       "support; not momentum-conserving (default true in the channel scenes, else false)",
       NULL, sp->kernel_correction, &sp->kernel_correction, NULL));
-  PetscCall(PetscOptionsEnum(
+  PetscCall(options_read_enum(
       "-sph_wall_extrapolation",
       "Wall velocity of the viscous term [1]: adami (Shepard mirror, any wall shape) or quadratic "
       "(no-slip quadratic along the wall normal, exact for quadratic profiles; needs the wall "
       "geometry from the scene: default in the channel scenes, else adami)",
       NULL, sph_wall_names, (PetscEnum)sp->wall, (PetscEnum *)&sp->wall, NULL));
-  PetscCall(PetscOptionsEnum(
+  PetscCall(options_read_enum(
       "-sph_force_sweep",
       "Momentum sweep [1]: auto (the vectorised sweep over cell ranges where it applies: an "
       "AVX-512 or AVX2 build, no kernel correction, Lucy or Wendland; else the pair list), pairs, "
       "or "
       "cells; both give the same bits",
       NULL, sph_sweep_names, (PetscEnum)sp->sweep, (PetscEnum *)&sp->sweep, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-sph_density_predict",
       "Continuity: the forces see the density predicted for the end of the step, rho + dt "
       "drho, corrected to the trapezoid after them, instead of the half-step rho + dt/2 drho, "

@@ -18,11 +18,11 @@ static PetscErrorCode box_set_from_options(scene *self, sim *s) {
   box_data *b = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene box", NULL);
-  PetscCall(PetscOptionsInt("-box_nx", "Particles along x [1]", NULL, b->nx, &b->nx, NULL));
-  PetscCall(PetscOptionsInt("-box_ny", "Particles along y [1]", NULL, b->ny, &b->ny, NULL));
-  PetscCall(PetscOptionsReal("-box_dx", "Lattice spacing [m]", NULL, b->dx, &b->dx, NULL));
-  PetscCall(PetscOptionsReal("-box_velocity", "Taylor-Green vortex amplitude U [m/s]", NULL,
-                             b->velocity, &b->velocity, NULL));
+  PetscCall(options_read_int("-box_nx", "Particles along x [1]", NULL, b->nx, &b->nx, NULL));
+  PetscCall(options_read_int("-box_ny", "Particles along y [1]", NULL, b->ny, &b->ny, NULL));
+  PetscCall(options_read_real("-box_dx", "Lattice spacing [m]", NULL, b->dx, &b->dx, NULL));
+  PetscCall(options_read_real("-box_velocity", "Taylor-Green vortex amplitude U [m/s]", NULL,
+                              b->velocity, &b->velocity, NULL));
   PetscOptionsEnd();
   PetscCheck(b->nx > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-box_nx must be > 0 (got %" PetscInt_FMT ")", b->nx);

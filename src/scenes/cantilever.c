@@ -35,12 +35,12 @@ static PetscErrorCode cantilever_set_from_options(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL,
                     "Scene cantilever (two-layer mass-spring beam, clamped, tip load)", NULL);
-  PetscCall(PetscOptionsInt("-cantilever_n", "Columns of particles, clamped ones included [1]",
-                            NULL, c->st.n, &c->st.n, NULL));
-  PetscCall(PetscOptionsInt("-cantilever_clamp", "Clamped columns at the left end [1]", NULL,
-                            c->st.n_clamp, &c->st.n_clamp, NULL));
-  PetscCall(PetscOptionsReal("-cantilever_mass", "Mass of one particle [kg] (per unit depth)", NULL,
-                             c->st.mass, &c->st.mass, NULL));
+  PetscCall(options_read_int("-cantilever_n", "Columns of particles, clamped ones included [1]",
+                             NULL, c->st.n, &c->st.n, NULL));
+  PetscCall(options_read_int("-cantilever_clamp", "Clamped columns at the left end [1]", NULL,
+                             c->st.n_clamp, &c->st.n_clamp, NULL));
+  PetscCall(options_read_real("-cantilever_mass", "Mass of one particle [kg] (per unit depth)",
+                              NULL, c->st.mass, &c->st.mass, NULL));
   PetscOptionsEnd();
   PetscCheck(c->st.n_clamp >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-cantilever_clamp must be >= 1 (got %" PetscInt_FMT ")", c->st.n_clamp);

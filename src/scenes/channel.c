@@ -48,20 +48,20 @@ static PetscErrorCode channel_set_from_options(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL,
                     c->flow == CHANNEL_POISEUILLE ? "Scene poiseuille" : "Scene couette", NULL);
-  PetscCall(PetscOptionsReal("-channel_width", "Distance l between the walls [m]", NULL, c->width,
-                             &c->width, NULL));
-  PetscCall(PetscOptionsReal("-channel_length", "Periodic length along x [m]", NULL, c->length,
-                             &c->length, NULL));
+  PetscCall(options_read_real("-channel_width", "Distance l between the walls [m]", NULL, c->width,
+                              &c->width, NULL));
+  PetscCall(options_read_real("-channel_length", "Periodic length along x [m]", NULL, c->length,
+                              &c->length, NULL));
   PetscCall(
-      PetscOptionsInt("-channel_nx", "Liquid particles along x [1]", NULL, c->nx, &c->nx, NULL));
-  PetscCall(PetscOptionsInt("-channel_ny", "Liquid particles across the channel [1]", NULL, c->ny,
-                            &c->ny, NULL));
-  PetscCall(PetscOptionsInt("-channel_wall_layers",
-                            "Wall particle layers per wall [1] (0 = fill the support)", NULL,
-                            c->wall_layers, &c->wall_layers, NULL));
+      options_read_int("-channel_nx", "Liquid particles along x [1]", NULL, c->nx, &c->nx, NULL));
+  PetscCall(options_read_int("-channel_ny", "Liquid particles across the channel [1]", NULL, c->ny,
+                             &c->ny, NULL));
+  PetscCall(options_read_int("-channel_wall_layers",
+                             "Wall particle layers per wall [1] (0 = fill the support)", NULL,
+                             c->wall_layers, &c->wall_layers, NULL));
   if (c->flow == CHANNEL_COUETTE)
-    PetscCall(PetscOptionsReal("-wall_speed", "Upper plate speed along x [m/s]", NULL,
-                               c->wall_speed, &c->wall_speed, NULL));
+    PetscCall(options_read_real("-wall_speed", "Upper plate speed along x [m/s]", NULL,
+                                c->wall_speed, &c->wall_speed, NULL));
   PetscOptionsEnd();
   PetscCheck(c->width > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-channel_width must be > 0 m (got %g)", c->width);

@@ -35,22 +35,23 @@ static PetscErrorCode flap_set_from_options(scene *self, sim *s) {
   flap_data *f = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene flap (flexible flap in a periodic channel flow)", NULL);
-  PetscCall(PetscOptionsInt("-flap_nx", "Liquid lattice columns (periodic length = nx dx) [1]",
-                            NULL, f->nx, &f->nx, NULL));
-  PetscCall(PetscOptionsInt("-flap_ny", "Liquid lattice rows (channel width = ny dx) [1]", NULL,
-                            f->ny, &f->ny, NULL));
-  PetscCall(PetscOptionsReal("-flap_dx",
-                             "Particle spacing dx [m] (also the flap's bond rest length)", NULL,
-                             f->dx, &f->dx, NULL));
-  PetscCall(PetscOptionsInt("-flap_rows", "Flap height in rows above the wall [1]", NULL,
-                            f->flap_rows, &f->flap_rows, NULL));
-  PetscCall(PetscOptionsInt("-flap_column", "Lattice column of the flap's upstream layer [1]", NULL,
-                            f->flap_x, &f->flap_x, NULL));
-  PetscCall(PetscOptionsReal("-flap_density_ratio", "Flap particle mass / liquid particle mass [1]",
-                             NULL, f->solid_density_ratio, &f->solid_density_ratio, NULL));
-  PetscCall(PetscOptionsInt("-flap_crossing_interval",
-                            "Steps between checks that no liquid crosses the flap [1]", NULL,
-                            f->crossing_interval, &f->crossing_interval, NULL));
+  PetscCall(options_read_int("-flap_nx", "Liquid lattice columns (periodic length = nx dx) [1]",
+                             NULL, f->nx, &f->nx, NULL));
+  PetscCall(options_read_int("-flap_ny", "Liquid lattice rows (channel width = ny dx) [1]", NULL,
+                             f->ny, &f->ny, NULL));
+  PetscCall(options_read_real("-flap_dx",
+                              "Particle spacing dx [m] (also the flap's bond rest length)", NULL,
+                              f->dx, &f->dx, NULL));
+  PetscCall(options_read_int("-flap_rows", "Flap height in rows above the wall [1]", NULL,
+                             f->flap_rows, &f->flap_rows, NULL));
+  PetscCall(options_read_int("-flap_column", "Lattice column of the flap's upstream layer [1]",
+                             NULL, f->flap_x, &f->flap_x, NULL));
+  PetscCall(options_read_real("-flap_density_ratio",
+                              "Flap particle mass / liquid particle mass [1]", NULL,
+                              f->solid_density_ratio, &f->solid_density_ratio, NULL));
+  PetscCall(options_read_int("-flap_crossing_interval",
+                             "Steps between checks that no liquid crosses the flap [1]", NULL,
+                             f->crossing_interval, &f->crossing_interval, NULL));
   PetscOptionsEnd();
   PetscCheck(f->crossing_interval >= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flap_crossing_interval must be >= 1 (got %" PetscInt_FMT ")", f->crossing_interval);

@@ -57,18 +57,18 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
   intestine_data *c = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene intestine (colon with peristalsis)", NULL);
-  PetscCall(PetscOptionsInt("-intestine_pockets", "Number of pockets N + 1 [1]", NULL, c->n_pockets,
-                            &c->n_pockets, NULL));
-  PetscCall(PetscOptionsReal("-intestine_b", "Pocket length b [m]", NULL, c->b, &c->b, NULL));
-  PetscCall(PetscOptionsReal("-intestine_dx", "Particle spacing dx [m] (also the membrane's r0)",
-                             NULL, c->dx, &c->dx, NULL));
-  PetscCall(PetscOptionsReal("-intestine_level", "Liquid level L above the folds [m]", NULL,
-                             c->level, &c->level, NULL));
-  PetscCall(PetscOptionsReal("-intestine_amplitude",
-                             "Haustral depth A of the profile -A sin^2(pi x/b) [m]", NULL,
-                             c->amplitude, &c->amplitude, NULL));
-  PetscCall(PetscOptionsInt("-intestine_membrane_layers", "Membrane particle layers [1]", NULL,
-                            c->layers, &c->layers, NULL));
+  PetscCall(options_read_int("-intestine_pockets", "Number of pockets N + 1 [1]", NULL,
+                             c->n_pockets, &c->n_pockets, NULL));
+  PetscCall(options_read_real("-intestine_b", "Pocket length b [m]", NULL, c->b, &c->b, NULL));
+  PetscCall(options_read_real("-intestine_dx", "Particle spacing dx [m] (also the membrane's r0)",
+                              NULL, c->dx, &c->dx, NULL));
+  PetscCall(options_read_real("-intestine_level", "Liquid level L above the folds [m]", NULL,
+                              c->level, &c->level, NULL));
+  PetscCall(options_read_real("-intestine_amplitude",
+                              "Haustral depth A of the profile -A sin^2(pi x/b) [m]", NULL,
+                              c->amplitude, &c->amplitude, NULL));
+  PetscCall(options_read_int("-intestine_membrane_layers", "Membrane particle layers [1]", NULL,
+                             c->layers, &c->layers, NULL));
   /* the columns within b/25 of each end (3 at dx = 2.5e-4 m, 1 at 5e-4 m): the wave's bump
    * F sin^2(pi x/b) at the first free column, ~ F (pi x/b)^2, is what the membrane's step from
    * the fixed column to the free one has to take; a clamp of 1.5 mm at dx = 5e-4 m (0.07 F
@@ -77,27 +77,27 @@ static PetscErrorCode intestine_set_from_options(scene *self, sim *s) {
    * the options are read, and the cast must be defined for any dx. */
   const double within = c->b > 0 && c->dx > 0 ? floor(c->b / (25.0 * c->dx) + 1e-9) : 1.0;
   c->clamp = PetscMax(1, (PetscInt)PetscMin(within, 1e6));
-  PetscCall(PetscOptionsInt("-intestine_clamp",
-                            "Fixed membrane columns at each end [1] (default: those within b/25)",
-                            NULL, c->clamp, &c->clamp, NULL));
-  PetscCall(PetscOptionsReal("-intestine_wall_height", "Left wall's height above the level [m]",
-                             NULL, c->wall_height, &c->wall_height, NULL));
+  PetscCall(options_read_int("-intestine_clamp",
+                             "Fixed membrane columns at each end [1] (default: those within b/25)",
+                             NULL, c->clamp, &c->clamp, NULL));
+  PetscCall(options_read_real("-intestine_wall_height", "Left wall's height above the level [m]",
+                              NULL, c->wall_height, &c->wall_height, NULL));
   c->weir = c->level;
-  PetscCall(PetscOptionsReal("-intestine_weir",
-                             "Top of the overflow weir above the folds [m] (default: the level)",
-                             NULL, c->weir, &c->weir, NULL));
-  PetscCall(PetscOptionsBool("-intestine_red", "Track the liquid of a second pocket (red)", NULL,
-                             c->red, &c->red, NULL));
-  PetscCall(PetscOptionsInt("-intestine_red_pocket", "Pocket of the red set [1]", NULL,
-                            c->red_pocket, &c->red_pocket, NULL));
-  PetscCall(PetscOptionsReal("-intestine_uf_r2_min",
-                             "u_F: the least-squares line of x_F over the whole waves fits when "
-                             "its R^2 reaches this, else u_F is the initial slope [1]",
-                             NULL, c->uf_r2_min, &c->uf_r2_min, NULL));
+  PetscCall(options_read_real("-intestine_weir",
+                              "Top of the overflow weir above the folds [m] (default: the level)",
+                              NULL, c->weir, &c->weir, NULL));
+  PetscCall(options_read_bool("-intestine_red", "Track the liquid of a second pocket (red)", NULL,
+                              c->red, &c->red, NULL));
+  PetscCall(options_read_int("-intestine_red_pocket", "Pocket of the red set [1]", NULL,
+                             c->red_pocket, &c->red_pocket, NULL));
+  PetscCall(options_read_real("-intestine_uf_r2_min",
+                              "u_F: the least-squares line of x_F over the whole waves fits when "
+                              "its R^2 reaches this, else u_F is the initial slope [1]",
+                              NULL, c->uf_r2_min, &c->uf_r2_min, NULL));
   PetscCall(options_run_control("-intestine_uf_r2_min"));
-  PetscCall(PetscOptionsInt("-intestine_uf_initial_waves",
-                            "u_F's initial slope: the line over the first this many waves [1]",
-                            NULL, c->uf_initial_waves, &c->uf_initial_waves, NULL));
+  PetscCall(options_read_int("-intestine_uf_initial_waves",
+                             "u_F's initial slope: the line over the first this many waves [1]",
+                             NULL, c->uf_initial_waves, &c->uf_initial_waves, NULL));
   PetscCall(options_run_control("-intestine_uf_initial_waves"));
   PetscOptionsEnd();
   PetscCheck(c->uf_r2_min > 0 && c->uf_r2_min <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -39,18 +39,18 @@ static PetscErrorCode peristaltic_set_from_options(scene *self, sim *s) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene peristaltic_channel", NULL);
   PetscCall(
-      PetscOptionsReal("-peristaltic_a", "Walls' mean half-width a [m]", NULL, c->a, &c->a, NULL));
-  PetscCall(PetscOptionsReal("-peristaltic_b", "Wave amplitude b [m], 0 <= b < a", NULL, c->b,
-                             &c->b, NULL));
+      options_read_real("-peristaltic_a", "Walls' mean half-width a [m]", NULL, c->a, &c->a, NULL));
+  PetscCall(options_read_real("-peristaltic_b", "Wave amplitude b [m], 0 <= b < a", NULL, c->b,
+                              &c->b, NULL));
   c->lambda = PERISTALTIC_WAVELENGTH_A * c->a;
-  PetscCall(PetscOptionsReal("-peristaltic_wavelength",
-                             "Wavelength lambda = the x period [m] (default 40 a)", NULL, c->lambda,
-                             &c->lambda, &lambda_set));
-  PetscCall(PetscOptionsReal("-peristaltic_speed", "Wave speed c along +x [m/s]", NULL, c->c, &c->c,
-                             NULL));
-  PetscCall(PetscOptionsInt("-peristaltic_ny",
-                            "Liquid particles across the half-width a (spacing dx = a/ny) [1]",
-                            NULL, c->ny, &c->ny, NULL));
+  PetscCall(options_read_real("-peristaltic_wavelength",
+                              "Wavelength lambda = the x period [m] (default 40 a)", NULL,
+                              c->lambda, &c->lambda, &lambda_set));
+  PetscCall(options_read_real("-peristaltic_speed", "Wave speed c along +x [m/s]", NULL, c->c,
+                              &c->c, NULL));
+  PetscCall(options_read_int("-peristaltic_ny",
+                             "Liquid particles across the half-width a (spacing dx = a/ny) [1]",
+                             NULL, c->ny, &c->ny, NULL));
   PetscOptionsEnd();
   PetscCheck(c->a > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-peristaltic_a must be > 0 (got %g m)",
              c->a);
@@ -81,7 +81,7 @@ static PetscErrorCode peristaltic_set_from_options(scene *self, sim *s) {
 
   /* the liquid: nu from Re, c0 from the lubrication pressure (-sph_nu, if given, counts) */
   double nu = c->c * c->a / PERISTALTIC_RE;
-  PetscCall(PetscOptionsGetReal(NULL, NULL, "-sph_nu", &nu, &nu_set));
+  PetscCall(options_get_real(NULL, NULL, "-sph_nu", &nu, &nu_set));
   const double rho0 = 1000.0;
   const double dp = analytic_peristaltic_pressure_range(c->a, c->b, c->lambda, c->c, rho0 * nu);
   /* and never below 2 nu/h_s, where the sound-speed limit on dt meets the viscous one: a

@@ -113,49 +113,49 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   vein_data *v = self->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->comm, NULL, "Scene vein (deep-vein valve with two flexible leaflets)", NULL);
-  PetscCall(PetscOptionsReal("-vein_dx",
-                             "Particle spacing dx [m] (lengths and masses scale from dx = 1e-4 m)",
-                             NULL, v->dx, &v->dx, NULL));
+  PetscCall(options_read_real("-vein_dx",
+                              "Particle spacing dx [m] (lengths and masses scale from dx = 1e-4 m)",
+                              NULL, v->dx, &v->dx, NULL));
   PetscCall(
-      PetscOptionsReal("-vein_width", "Channel width W [m]", NULL, v->width, &v->width, NULL));
-  PetscCall(PetscOptionsReal("-vein_sinus_diameter", "Sinus (valve chamber) diameter D [m]", NULL,
-                             v->diameter, &v->diameter, NULL));
-  PetscCall(PetscOptionsReal("-vein_sinus_length", "Sinus length along x [m]", NULL,
-                             v->sinus_length, &v->sinus_length, NULL));
-  PetscCall(PetscOptionsReal("-vein_length", "Periodic length of the channel [m]", NULL, v->length,
-                             &v->length, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_length",
-                             "Leaflet length L [m] (0.0256, 0.0175, 0.01 in the study)", NULL,
-                             v->leaflet_length, &v->leaflet_length, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_gap",
-                             "Rest distance between the two leaflet tips at dx = 1e-4 m [m] (plus "
-                             "2 (dx - 1e-4 m): the same clear opening at every dx)",
-                             NULL, v->leaflet_gap, &v->leaflet_gap, NULL));
-  PetscCall(PetscOptionsReal("-vein_leaflet_angle",
-                             "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)",
-                             NULL, v->leaflet_angle_deg, &v->leaflet_angle_deg, NULL));
-  PetscCall(PetscOptionsReal(
+      options_read_real("-vein_width", "Channel width W [m]", NULL, v->width, &v->width, NULL));
+  PetscCall(options_read_real("-vein_sinus_diameter", "Sinus (valve chamber) diameter D [m]", NULL,
+                              v->diameter, &v->diameter, NULL));
+  PetscCall(options_read_real("-vein_sinus_length", "Sinus length along x [m]", NULL,
+                              v->sinus_length, &v->sinus_length, NULL));
+  PetscCall(options_read_real("-vein_length", "Periodic length of the channel [m]", NULL, v->length,
+                              &v->length, NULL));
+  PetscCall(options_read_real("-vein_leaflet_length",
+                              "Leaflet length L [m] (0.0256, 0.0175, 0.01 in the study)", NULL,
+                              v->leaflet_length, &v->leaflet_length, NULL));
+  PetscCall(options_read_real("-vein_leaflet_gap",
+                              "Rest distance between the two leaflet tips at dx = 1e-4 m [m] (plus "
+                              "2 (dx - 1e-4 m): the same clear opening at every dx)",
+                              NULL, v->leaflet_gap, &v->leaflet_gap, NULL));
+  PetscCall(options_read_real("-vein_leaflet_angle",
+                              "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)",
+                              NULL, v->leaflet_angle_deg, &v->leaflet_angle_deg, NULL));
+  PetscCall(options_read_real(
       "-vein_leaflet_ka",
       "Leaflet angle stiffness k_a at dx = 1e-4 m [J] (scaled by 1e-4/dx; -angle_k sets it "
       "directly)",
       NULL, v->ka_ref, &v->ka_ref, NULL));
-  PetscCall(PetscOptionsReal("-vein_fluid_mass",
-                             "Fluid particle mass at dx = 1e-4 m [kg] (scaled by dx^2)", NULL,
-                             v->fluid_mass_ref, &v->fluid_mass_ref, NULL));
-  PetscCall(PetscOptionsReal("-vein_solid_mass",
-                             "Wall and leaflet particle mass at dx = 1e-4 m [kg] (scaled by dx^2)",
-                             NULL, v->solid_mass_ref, &v->solid_mass_ref, NULL));
-  PetscCall(PetscOptionsInt("-vein_wall_layers", "Wall particle layers [1]", NULL, v->wall_layers,
-                            &v->wall_layers, NULL));
-  PetscCall(PetscOptionsInt("-vein_crossing_interval",
-                            "Steps between checks that no liquid crosses a leaflet [1]", NULL,
-                            v->crossing_interval, &v->crossing_interval, NULL));
-  PetscCall(PetscOptionsReal(
+  PetscCall(options_read_real("-vein_fluid_mass",
+                              "Fluid particle mass at dx = 1e-4 m [kg] (scaled by dx^2)", NULL,
+                              v->fluid_mass_ref, &v->fluid_mass_ref, NULL));
+  PetscCall(options_read_real("-vein_solid_mass",
+                              "Wall and leaflet particle mass at dx = 1e-4 m [kg] (scaled by dx^2)",
+                              NULL, v->solid_mass_ref, &v->solid_mass_ref, NULL));
+  PetscCall(options_read_int("-vein_wall_layers", "Wall particle layers [1]", NULL, v->wall_layers,
+                             &v->wall_layers, NULL));
+  PetscCall(options_read_int("-vein_crossing_interval",
+                             "Steps between checks that no liquid crosses a leaflet [1]", NULL,
+                             v->crossing_interval, &v->crossing_interval, NULL));
+  PetscCall(options_read_real(
       "-vein_probe_time",
       "Time at which the measurement point (peak stress, sinus side) is chosen [s] "
       "(0 = a quarter period, the forward peak)",
       NULL, v->probe_time, &v->probe_time, NULL));
-  PetscCall(PetscOptionsBool(
+  PetscCall(options_read_bool(
       "-vein_clots",
       "Grow clots from seed particles (module agglomeration, -agglomeration_*; seeds by "
       "default P1, the sinus-side peak stress, and P2, the longest residence)",

@@ -31,3 +31,8 @@ set_tests_properties(doc_site PROPERTIES LABELS doc TIMEOUT 120)
 # known violations, each of which must still exist (test/doc/layers.py).
 add_test(NAME doc_layers COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layers.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(doc_layers PROPERTIES LABELS doc TIMEOUT 60)
+# doc_option_readers: every option is read through the checked readers of
+# include/dmhs/options.h, and no header redefines PETSc's (test/doc/option_readers.py).
+add_test(NAME doc_option_readers
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/option_readers.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(doc_option_readers PROPERTIES LABELS doc TIMEOUT 60)
