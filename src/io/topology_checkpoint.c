@@ -10,6 +10,7 @@
 #include "h5check.h"
 #include "h5io.h"
 #include "checkpoint_rows.h"
+#include "topology_checkpoint.h"
 
 static const field_desc bond_gid_f = {"bond_gid", 2, FIELD_INT64, 0, 0, "1"},
                         bond_type_f = {"bond_type", 1, FIELD_INT64, 0, 0, "1"},
