@@ -3,7 +3,7 @@ plot_intestine_waves.py, plot_intestine_snapshot.py): the strict readers of a
 run's intestine.csv (its rows and its '# intestine:' line) and
 intestine-summary.csv, and the rows that end each completed wave. The
 measures themselves (u_F, alpha, u_P, u_S, Re) are the solver's, read from the
-summary: they are defined once, in src/diag/intestine_measures.c."""
+summary: they are defined once, in src/scenes/intestine/intestine_measures.c."""
 import csv
 import math
 import os

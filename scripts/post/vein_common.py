@@ -146,7 +146,7 @@ def masks(d):
     return d["type"] == FLUID, (d["type"] == WALL) & ~leaflet, leaflet
 
 
-# src/scenes/vein.c's defaults for the parameters a title shows (the reference case)
+# src/scenes/vein/vein.c's defaults for the parameters a title shows (the reference case)
 VEIN_DEFAULTS = {"vein_leaflet_length": 0.0256, "body_force_amplitude": 0.1, "vein_leaflet_ka": 0.01,
                  "body_force_period": 4.0, "vein_dx": 1e-4, "sph_nu": 3.3e-6}
 DX_REF = 1e-4  # the spacing -vein_leaflet_ka is stated at [m]

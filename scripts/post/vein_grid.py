@@ -2,7 +2,7 @@
 drawing helpers shared by the plot_vein_*.py field maps (scene vein).
 
   geometry(snap_path, info)   the scene's lengths [m] from the snapshot's 'options'
-                              attribute (defaults of src/scenes/vein.c otherwise)
+                              attribute (defaults of src/scenes/vein/vein.c otherwise)
   interpolate(...)            Shepard-normalised SPH sums at arbitrary points
                               (sph_grid.py, the one implementation for every scene)
   liquid_grid(...)            liquid fields on a regular grid, masked outside the liquid
@@ -33,7 +33,7 @@ import vein_common as vc
 import sph_grid as sg
 from sph_grid import MASK_THRESHOLD, grid_axes, interpolate  # noqa: F401 (the vein scripts use them)
 
-# src/scenes/vein.c's defaults (the reference case, run 1 of the study)
+# src/scenes/vein/vein.c's defaults (the reference case, run 1 of the study)
 DEFAULTS = {"length": 0.09, "width": 0.008, "sinus_diameter": 0.014, "sinus_length": 0.04,
             "leaflet_length": 0.0256, "leaflet_gap": 1e-3, "dx": 1e-4, "wall_layers": 3}
 CLOT, CLOT_COLOR = 3, "#8b1a1a"
@@ -160,7 +160,7 @@ def leaflets(d):
 
 
 def wall_surface(geo, x):
-    """|y| of the wall surface [m] at x [m] (src/scenes/vein.c: W/2, and the
+    """|y| of the wall surface [m] at x [m] (src/scenes/vein/vein.c: W/2, and the
     half-ellipse of semi-axes A = sinus_length/2, B = (D - W)/2 over the sinus)."""
     A = 0.5 * geo["sinus_length"]
     B = 0.5 * (geo["sinus_diameter"] - geo["width"])

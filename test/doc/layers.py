@@ -32,7 +32,6 @@ HEADER_LAYERS = {
     "scene.h": "scenes",  # the scene interface
     "scenes.h": "scenes",  # the scenes' constructors
     "driver.h": "driver",  # sim_create, sim_run, sim_destroy (src/driver/run.c)
-    "flap_metrics.h": "diag",  # the flap's diagnostics (src/diag/flap_*.c)
 }
 
 # The includes that run upward today; none. Take an entry out in the commit that removes its

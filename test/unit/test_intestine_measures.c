@@ -1,4 +1,4 @@
-/* The colon's measures (src/diag/intestine_measures.c, doc/theory.md,
+/* The colon's measures (src/scenes/intestine/intestine_measures.c, doc/theory.md,
  * "Peristalsis and tracking") on synthetic rows whose answers are known:
  *   - a line fitted to x = x0 + u t over a window is exact (slope, x0, R^2 = 1),
  *     takes only the window's rows, and is undefined with fewer than 2;
@@ -20,7 +20,7 @@
  *   - Re = b u/nu only for u > 0. */
 #include <string.h>
 #include "unit_common.h"
-#include "dmhs/intestine_measures.h"
+#include "scenes/intestine/intestine_measures.h"
 
 #define NROWS 4000
 

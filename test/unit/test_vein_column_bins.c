@@ -1,4 +1,4 @@
-/* The vein crossing check's nearest-column search (src/diag/vein_column_bins.c). Proves, for
+/* The vein crossing check's nearest-column search (src/scenes/vein/vein_column_bins.c). Proves, for
  * a leaflet of 120 columns bent through a quarter circle (and one straight leaflet), that for
  * thousands of random points inside the leaflet's box the binned search returns what a search
  * over every column returns: the column with the nearest mid-point, the lowest on a tie, and
@@ -8,7 +8,7 @@
 #include <string.h>
 #include "unit_common.h"
 #include "dmhs/domain.h"
-#include "diag/vein_column_bins.h"
+#include "scenes/vein/vein_column_bins.h"
 
 #define NC 120
 #define DX 1e-4

@@ -1,11 +1,11 @@
-/* The measurement point's peak stress per cycle (src/diag/vein_cycle_peaks.c): a history of
+/* The measurement point's peak stress per cycle (src/scenes/vein/vein_cycle_peaks.c): a history of
  * rows every 0.02 s from the probe time T/4 of a 4 s period, with output times a step off
  * their nominal values as a run writes them, counts every whole cycle once: 4 for a run that
  * ends at 15.999999 s for 16 s with the point chosen at 1.0000013 s; each cycle's peak is
  * its own row's; a point chosen after a cycle's probe time leaves that cycle out; a run
  * stopped mid-cycle counts only the whole ones; no history gives none. */
 #include "unit_common.h"
-#include "diag/vein_cycle_peaks.h"
+#include "scenes/vein/vein_cycle_peaks.h"
 
 #define T      4.0
 #define DT_ROW 0.02

@@ -8,7 +8,7 @@
  * zero fluid crossings of the flap;
  * no-slip: the liquid's velocity extrapolated onto the flap's faces, relative
    to the flap, averaged over the last 25 % of the run, below --slip (in units
-   of the channel's peak speed u_max; see flap_slip in src/scenes/flap.c).
+   of the channel's peak speed u_max; see flap_slip in src/scenes/flap/flap.c).
 Writes flap.png (settled flow) next to the CSV when --plot is given."""
 import argparse, os, subprocess, sys
 import numpy as np

@@ -53,7 +53,7 @@ assert np.abs(r / p["bond_r01"] - 1).max() < 1e-9, "bond lengths"
 a, b = X[angles[:, 2] - 1] - X[angles[:, 3] - 1], X[angles[:, 4] - 1] - X[angles[:, 3] - 1]
 th = np.degrees(np.arctan2(np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), (a * b).sum(axis=1)))
 assert np.abs(th - p["angle_theta01"]).max() < 1e-6, "angles"
-# reference values scaled to dx = 5e-4 m (src/scenes/vein.c): h = 2.5 dx, K_bond 1e6/125, r* = dx
+# reference values scaled to dx = 5e-4 m (src/scenes/vein/vein.c): h = 2.5 dx, K_bond 1e6/125, r* = dx
 r5 = 5.0
 assert math.isclose(p["h"], 2.5 * 5e-4) and math.isclose(p["bond_k1"], 1e6 / r5**3)
 assert math.isclose(p["rep_rstar"], 5e-4) and math.isclose(p["mu"], 1056 * 1e-5)

@@ -1,8 +1,8 @@
-/* The flap's particles replicated on every rank (src/diag/flap_strip.c), for
+/* The flap's particles replicated on every rank (src/scenes/flap/flap_strip.c), for
  * the flap's diagnostics, refreshed per use; and the no-slip measure on its faces. */
 #ifndef DMHS_FLAP_STRIP_H
 #define DMHS_FLAP_STRIP_H
-#include "dmhs/flap_metrics.h"
+#include "flap_metrics.h"
 
 typedef struct flap_strip {
   flap_layout lay;

@@ -1,4 +1,4 @@
-/* The diagnostic "intestine" (src/diag/intestine_tracking.c): the tracked
+/* The diagnostic "intestine" (src/scenes/intestine/intestine_tracking.c): the tracked
  * liquid of the intestine scene.
  * <output_dir>/intestine.csv at every output time (and t = 0):
  *   t, sub (sub-period, -1 = no wave), x_F [m] (mean x of white),

@@ -4,14 +4,14 @@
 #include <math.h>
 #include <errno.h>
 #include <string.h>
-#include "dmhs/intestine_tracking.h"
+#include "intestine_tracking.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/sph.h"
 #include "dmhs/body_force.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"
-#include "dmhs/intestine_measures.h"
+#include "intestine_measures.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/csv.h"
 #include "dmhs/whole_file.h"

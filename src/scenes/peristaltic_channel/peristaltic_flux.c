@@ -5,7 +5,7 @@
  * 2^-40 of 2 a lambda c, the channel's volume times the wave speed, so rounding
  * is 1e-12 of the scale at any size); the maxima are order independent. */
 #include <math.h>
-#include "dmhs/peristaltic_flux.h"
+#include "peristaltic_flux.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/analytic.h"
 #include "dmhs/checkpoint.h"

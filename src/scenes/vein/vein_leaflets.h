@@ -1,8 +1,8 @@
-/* The vein's two leaflets replicated on every rank (src/diag/vein_leaflets.c),
+/* The vein's two leaflets replicated on every rank (src/scenes/vein/vein_leaflets.c),
  * for the vein's diagnostics, refreshed per use. */
 #ifndef DMHS_VEIN_LEAFLETS_H
 #define DMHS_VEIN_LEAFLETS_H
-#include "dmhs/vein_metrics.h"
+#include "vein_metrics.h"
 
 typedef struct vein_leaflets {
   vein_layout lay;

@@ -1,4 +1,4 @@
-/* Diagnostics of the flap scene (src/diag/flap_*.c), with the geometry the
+/* Diagnostics of the flap scene (src/scenes/flap/flap_*.c), with the geometry the
  * scene built:
  *   "flap_crossings" (flap_crossings.c): every -flap_crossing_interval steps
  *     and at output times, each fluid particle beside the flap (within 3 dx of

@@ -6,7 +6,7 @@
  *   static tip deflection w = F L^3/(3 EI) + F L/(kGA),
  *   first frequency 1/w1^2 = 1/wb^2 + 1/ws^2 (Dunkerley), wb = 1.8751^2 sqrt(EI/(mu L^4)),
  *   ws = (pi/2) sqrt(kGA/(mu L^2)).
- * Output: the diagnostic "cantilever" (cantilever.csv, src/diag/cantilever_tip.c). */
+ * Output: the diagnostic "cantilever" (cantilever.csv, src/scenes/cantilever/cantilever_tip.c). */
 #include <math.h>
 #include "dmhs/sim.h"
 #include "dmhs/fields.h"
@@ -15,8 +15,8 @@
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/solid_load.h"
-#include "dmhs/cantilever_tip.h"
-#include "solid_strip.h"
+#include "cantilever_tip.h"
+#include "scenes/solid_strip.h"
 
 typedef struct {
   solid_strip st;

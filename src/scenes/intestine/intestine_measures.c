@@ -20,7 +20,7 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
-#include "dmhs/intestine_measures.h"
+#include "intestine_measures.h"
 
 PetscInt intestine_measures_whole_waves(double t_last, double t_d, double T_w, PetscInt waves_max,
                                         double tol) {

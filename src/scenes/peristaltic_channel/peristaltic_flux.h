@@ -1,10 +1,9 @@
-/* The diagnostic "peristaltic_flux" (src/diag/peristaltic_flux.c): the time-mean
- * volume flux of the peristaltic channel over every completed wave period T,
- * against the long-wavelength, low-Reynolds-number theory (analytic.h).
- * At every step (step 0 included) it measures the lab-frame flux per unit depth
- *   Q(t) = (sum over liquid particles j of V_j v_x,j) / lambda,  V_j = m_j/rho_j
- * and integrates it in time by the trapezoid rule, the step that crosses a period's
- * end split there by linear interpolation, so that every mean is over exactly
+/* The diagnostic "peristaltic_flux" (src/scenes/peristaltic_channel/peristaltic_flux.c): the
+ * time-mean volume flux of the peristaltic channel over every completed wave period T, against the
+ * long-wavelength, low-Reynolds-number theory (analytic.h). At every step (step 0 included) it
+ * measures the lab-frame flux per unit depth Q(t) = (sum over liquid particles j of V_j v_x,j) /
+ * lambda,  V_j = m_j/rho_j and integrates it in time by the trapezoid rule, the step that crosses a
+ * period's end split there by linear interpolation, so that every mean is over exactly
  * [(k-1) T, k T]. <output_dir>/flux.csv: cycle,t,Q_mean,Q_theory, one row per
  * completed period (t its end [s], fluxes [m^2/s]); a restart continues the running
  * mean and the file exactly. At the end of the run, a line comparing the last

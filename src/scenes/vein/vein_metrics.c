@@ -30,7 +30,7 @@
 #include <errno.h>
 #include <math.h>
 #include <string.h>
-#include "dmhs/vein_metrics.h"
+#include "vein_metrics.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/sph.h"

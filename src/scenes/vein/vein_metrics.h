@@ -1,7 +1,7 @@
 /* Diagnostics of the deep-vein valve, registered by the vein scene with the
- * geometry it built: "vein_crossings" (src/diag/vein_crossings.c), the check
+ * geometry it built: "vein_crossings" (src/scenes/vein/vein_crossings.c), the check
  * that no liquid crosses a leaflet, every crossing_interval steps and at output
- * times; "vein" (src/diag/vein_metrics.c), at output times, owning
+ * times; "vein" (src/scenes/vein/vein_metrics.c), at output times, owning
  * <output_dir>/vein.csv, vein-sinus.csv and vein-summary.csv and the
  * measurement point (doc/guide/scene-vein.md, "Outputs and plots"; definitions in
  * doc/theory.md, "Vein metrics"). */

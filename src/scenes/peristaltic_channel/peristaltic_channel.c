@@ -19,7 +19,7 @@
 #include "dmhs/scenes.h"
 #include "dmhs/analytic.h"
 #include "dmhs/wall_wave.h"
-#include "dmhs/peristaltic_flux.h"
+#include "peristaltic_flux.h"
 
 #define PERISTALTIC_RE            0.1  /* default Reynolds number c a/nu */
 #define PERISTALTIC_WAVELENGTH_A  40.  /* default lambda/a */

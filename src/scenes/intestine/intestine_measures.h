@@ -1,4 +1,4 @@
-/* The colon's measures from the rows of intestine.csv (src/diag/intestine_measures.c,
+/* The colon's measures from the rows of intestine.csv (src/scenes/intestine/intestine_measures.c,
  * doc/theory.md, "Peristalsis and tracking"): the front velocity u_F as the
  * thesis defines it, alpha after one period and at the last whole wave's end,
  * the pouring and surfing velocities u_P and u_S, and the Reynolds numbers.

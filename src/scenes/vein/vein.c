@@ -52,11 +52,11 @@
 #include "dmhs/repulsion.h"
 #include "dmhs/body_force.h"
 #include "dmhs/stress.h"
-#include "dmhs/vein_metrics.h"
+#include "vein_metrics.h"
 #include "dmhs/solid_load.h"
 #include "dmhs/agglomeration.h"
 #include "dmhs/extreme.h"
-#include "solid_strip.h"
+#include "scenes/solid_strip.h"
 
 #define VEIN_DX_REF 1e-4 /* the published resolution [m] */
 

@@ -17,8 +17,8 @@
 #include "dmhs/repulsion.h"
 #include "dmhs/body_force.h"
 #include "dmhs/solid_load.h"
-#include "dmhs/flap_metrics.h"
-#include "solid_strip.h"
+#include "flap_metrics.h"
+#include "scenes/solid_strip.h"
 
 typedef struct {
   PetscInt nx, ny;    /* liquid lattice (before the flap is cut out) */

@@ -1,4 +1,4 @@
-/* The diagnostic "cantilever" (src/diag/cantilever_tip.c): the loaded beam's
+/* The diagnostic "cantilever" (src/scenes/cantilever/cantilever_tip.c): the loaded beam's
  * tip and energies at every output time in <output_dir>/cantilever.csv:
  *   t, tip_dx, tip_dy (mean displacement of the particles the load acts on [m]),
  *   kinetic and potential energy [J]; header lines '# key = value' give the beam

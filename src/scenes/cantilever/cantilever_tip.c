@@ -1,7 +1,7 @@
 /* The diagnostic "cantilever": tip displacement and energies of the loaded
  * beam (cantilever_tip.h). */
 #include <math.h>
-#include "dmhs/cantilever_tip.h"
+#include "cantilever_tip.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"

@@ -23,7 +23,7 @@
  * -intestine_red, in pocket -intestine_red_pocket ("red", tracer 2).
  *
  * Diagnostics: "intestine" (intestine.csv at output times, the summary at the
- * end: src/diag/intestine_tracking.c). After every step the liquid past the
+ * end: src/scenes/intestine/intestine_tracking.c). After every step the liquid past the
  * weir is parked (intestine_post_step). */
 #include <math.h>
 #include "dmhs/sim.h"
@@ -37,7 +37,7 @@
 #include "dmhs/body_force.h"
 #include "dmhs/peristalsis.h"
 #include "dmhs/tracking.h"
-#include "dmhs/intestine_tracking.h"
+#include "intestine_tracking.h"
 
 typedef struct {
   PetscInt n_pockets; /* N + 1 */
