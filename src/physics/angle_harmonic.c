@@ -97,12 +97,15 @@ static PetscErrorCode angle_setup(module *self, sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode angle_compute(module *self, sim *s) {
-  const angle_data *d = self->data;
+/* One pass over the angles, tallying what is asked (the LAMMPS ev_tally idea): forces into a;
+ * the three-body virial -(a (x) F_i + b (x) F_k) (a = x_i - x_j, b = x_k - x_j), a third to
+ * each of the three rows as LAMMPS' compute stress/atom does, into W; the weighted energy
+ * into *e. force, virial, energy are constants at each call below, so each use compiles to
+ * its own loop. */
+static inline void angle_tally(const angle_data *d, const sim *s, int force, int virial, int energy,
+                               double (*restrict W)[3], double *e) {
   const topology *t = s->topo;
-  particles *ps = &s->ps;
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(events.angle, 0, 0, 0, 0));
+  const particles *ps = &s->ps;
   const PetscInt na = t->n_angle_local;
   const PetscInt(*restrict angle)[3] = (const PetscInt(*)[3])t->angle;
   const PetscInt *restrict type = t->angle_ltype;
@@ -110,66 +113,59 @@ static PetscErrorCode angle_compute(module *self, sim *s) {
   const double *restrict mass = ps->mass;
   const double *restrict K = d->k, *restrict TH0 = d->theta0;
   double(*restrict a)[2] = ps->a;
+  double local = 0;
   for (PetscInt q = 0; q < na; q++) {
     const PetscInt i = angle[q][0], j = angle[q][1], k = angle[q][2], ty = type[q];
     const double ra[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double rb[2] = {x[k][0] - x[j][0], x[k][1] - x[j][1]};
     double fi[2], fk[2];
-    (void)angle_harmonic_iact(K[ty], TH0[ty], ra, rb, fi, fk);
-    const double mi = 1.0 / mass[i], mj = 1.0 / mass[j], mk = 1.0 / mass[k];
-    a[i][0] += fi[0] * mi;
-    a[i][1] += fi[1] * mi;
-    a[k][0] += fk[0] * mk;
-    a[k][1] += fk[1] * mk;
-    a[j][0] -= (fi[0] + fk[0]) * mj;
-    a[j][1] -= (fi[1] + fk[1]) * mj;
+    const double u = angle_harmonic_iact(K[ty], TH0[ty], ra, rb, fi, fk);
+    if (force) {
+      const double mi = 1.0 / mass[i], mj = 1.0 / mass[j], mk = 1.0 / mass[k];
+      a[i][0] += fi[0] * mi;
+      a[i][1] += fi[1] * mi;
+      a[k][0] += fk[0] * mk;
+      a[k][1] += fk[1] * mk;
+      a[j][0] -= (fi[0] + fk[0]) * mj;
+      a[j][1] -= (fi[1] + fk[1]) * mj;
+    }
+    if (virial) {
+      const double third = -1.0 / 3.0;
+      const double w[3] = {third * (ra[0] * fi[0] + rb[0] * fk[0]),
+                           third * (ra[0] * fi[1] + rb[0] * fk[1]),
+                           third * (ra[1] * fi[1] + rb[1] * fk[1])};
+      for (int c = 0; c < 3; c++) {
+        W[i][c] += w[c];
+        W[j][c] += w[c];
+        W[k][c] += w[c];
+      }
+    }
+    if (energy)
+      local += t->angle_weight[q] * u;
   }
-  PetscCall(PetscLogFlops(60.0 * (double)na));
+  if (energy)
+    *e = local;
+}
+
+static PetscErrorCode angle_compute(module *self, sim *s) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.angle, 0, 0, 0, 0));
+  angle_tally(self->data, s, 1, 0, 0, NULL, NULL);
+  PetscCall(PetscLogFlops(60.0 * (double)s->topo->n_angle_local));
   PetscCall(PetscLogEventEnd(events.angle, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
-/* Three-body virial -(a (x) F_i + b (x) F_k) (a = x_i - x_j, b = x_k - x_j),
- * a third to each of the three rows, as LAMMPS' compute stress/atom does. */
 static PetscErrorCode angle_virial(module *self, sim *s, double (*W)[3]) {
-  const angle_data *d = self->data;
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  for (PetscInt q = 0; q < t->n_angle_local; q++) {
-    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2],
-                   ty = t->angle_ltype[q];
-    const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
-    double fi[2], fk[2];
-    (void)angle_harmonic_iact(d->k[ty], d->theta0[ty], ra, rb, fi, fk);
-    const double third = -1.0 / 3.0;
-    const double w[3] = {third * (ra[0] * fi[0] + rb[0] * fk[0]),
-                         third * (ra[0] * fi[1] + rb[0] * fk[1]),
-                         third * (ra[1] * fi[1] + rb[1] * fk[1])};
-    for (int c = 0; c < 3; c++) {
-      W[i][c] += w[c];
-      W[j][c] += w[c];
-      W[k][c] += w[c];
-    }
-  }
+  angle_tally(self->data, s, 0, 1, 0, W, NULL);
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode angle_energy_sum(module *self, sim *s, double *e) {
-  const angle_data *d = self->data;
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   double local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt q = 0; q < t->n_angle_local; q++) {
-    const PetscInt i = t->angle[q][0], j = t->angle[q][1], k = t->angle[q][2],
-                   ty = t->angle_ltype[q];
-    const double ra[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double rb[2] = {ps->x[k][0] - ps->x[j][0], ps->x[k][1] - ps->x[j][1]};
-    const double dth = angle_theta(ra, rb) - d->theta0[ty];
-    local += t->angle_weight[q] * d->k[ty] * dth * dth;
-  }
+  angle_tally(self->data, s, 0, 0, 1, NULL, &local);
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }

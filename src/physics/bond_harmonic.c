@@ -38,10 +38,15 @@ static PetscErrorCode bond_harmonic_setup(module *self, sim *s) {
 /* r0 of local bond entry b: its type's, or (r0 NULL) its own (topology bond_r0) */
 #define HARMONIC_R0(set, t, b, ty) ((set)->r0 ? (set)->r0[ty] : (t)->bond_r0[(t)->bond_index[b]])
 
-PetscErrorCode bond_harmonic_forces(sim *s, const harmonic_bonds *set) {
+/* One pass over the set's bonds, tallying what is asked (the LAMMPS ev_tally idea): forces
+ * into a (a is not NULL), the pair virial into W (both ends get -1/2 d (x) F_i, F_i = fr d)
+ * and the weighted energy into *e. force, virial, energy are constants at each call below, so
+ * each use compiles to its own loop; the forces' arithmetic is the step's whatever else is
+ * tallied. */
+static inline void harmonic_tally(const sim *s, const harmonic_bonds *set, int force, int virial,
+                                  int energy, double (*restrict W)[3], double *e) {
   const topology *t = s->topo;
-  particles *ps = &s->ps;
-  PetscFunctionBeginUser;
+  const particles *ps = &s->ps;
   const PetscInt nb = t->n_bond_local;
   const PetscInt(*restrict bond)[2] = (const PetscInt(*)[2])t->bond;
   const PetscInt *restrict type = t->bond_ltype;
@@ -50,51 +55,49 @@ PetscErrorCode bond_harmonic_forces(sim *s, const harmonic_bonds *set) {
   const double *restrict K = set->k;
   double(*restrict a)[2] = ps->a;
   const void *const *restrict owner = t->bond_owner;
+  double local = 0;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
     if (owner[ty] != set->owner) /* another module's bond type */
       continue;
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
-    const double fr =
-        bond_harmonic_iact(K[ty], HARMONIC_R0(set, t, b, ty), sqrt(d[0] * d[0] + d[1] * d[1]));
-    const double fi = fr / mass[i], fj = fr / mass[j];
-    a[i][0] += fi * d[0];
-    a[i][1] += fi * d[1];
-    a[j][0] -= fj * d[0];
-    a[j][1] -= fj * d[1];
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1]), r0 = HARMONIC_R0(set, t, b, ty);
+    if (force || virial) {
+      const double fr = bond_harmonic_iact(K[ty], r0, r);
+      if (force) {
+        const double fi = fr / mass[i], fj = fr / mass[j];
+        a[i][0] += fi * d[0];
+        a[i][1] += fi * d[1];
+        a[j][0] -= fj * d[0];
+        a[j][1] -= fj * d[1];
+      }
+      if (virial)
+        virial_pair_add(W, i, j, fr, d);
+    }
+    if (energy)
+      local += t->bond_weight[b] * bond_harmonic_energy(K[ty], r0, r);
   }
-  PetscCall(PetscLogFlops(20.0 * (double)nb));
+  if (energy)
+    *e = local;
+}
+
+PetscErrorCode bond_harmonic_forces(sim *s, const harmonic_bonds *set) {
+  PetscFunctionBeginUser;
+  harmonic_tally(s, set, 1, 0, 0, NULL, NULL);
+  PetscCall(PetscLogFlops(20.0 * (double)s->topo->n_bond_local));
   PetscFunctionReturn(0);
 }
 
-/* Pair virial of each bond: both ends get -1/2 d (x) F_i with F_i = fr d. */
 PetscErrorCode bond_harmonic_virial_add(sim *s, const harmonic_bonds *set, double (*W)[3]) {
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != set->owner)
-      continue;
-    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double fr = bond_harmonic_iact(set->k[ty], HARMONIC_R0(set, t, b, ty), hypot(d[0], d[1]));
-    virial_pair_add(W, i, j, fr, d);
-  }
+  harmonic_tally(s, set, 0, 1, 0, W, NULL);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode bond_harmonic_energy_of(sim *s, const harmonic_bonds *set, double *e) {
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   double local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != set->owner)
-      continue;
-    const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
-    local += t->bond_weight[b] * bond_harmonic_energy(set->k[ty], HARMONIC_R0(set, t, b, ty), r);
-  }
+  harmonic_tally(s, set, 0, 0, 1, NULL, &local);
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }

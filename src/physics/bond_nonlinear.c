@@ -84,13 +84,16 @@ static double bond_nonlinear_limit(const bond_params *p, PetscInt ty, double f) 
   return SPRING_DT_FACTOR * sqrt(p->m_min / k);
 }
 
-static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
-  bond_nonlinear_data *d = self->data;
-  const bond_params *p = &d->p;
+/* One pass over the module's bonds, tallying what is asked (the LAMMPS ev_tally idea): forces
+ * into a, with the largest |x|/r_max and its bond entry in *worst, *worst_b; the pair virial
+ * into W (both ends get -1/2 d (x) F_i, F_i = fr d); the weighted energy into *e. force,
+ * virial, energy are constants at each call below, so each use compiles to its own loop. */
+static inline void nonlinear_tally(const module *self, const sim *s, int force, int virial,
+                                   int energy, double *worst, PetscInt *worst_b,
+                                   double (*restrict W)[3], double *e) {
+  const bond_params *p = self->data;
   const topology *t = s->topo;
-  particles *ps = &s->ps;
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(events.bond, 0, 0, 0, 0));
+  const particles *ps = &s->ps;
   const PetscInt nb = t->n_bond_local;
   const PetscInt(*restrict bond)[2] = (const PetscInt(*)[2])t->bond;
   const PetscInt *restrict type = t->bond_ltype;
@@ -98,28 +101,56 @@ static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
   const double *restrict mass = ps->mass;
   const double *restrict K = p->k, *restrict R0 = p->r0, *restrict L = p->rmax;
   double(*restrict a)[2] = ps->a;
-  double worst = 0; /* largest |x|/r_max */
-  PetscInt worst_b = -1;
   const void *const *restrict owner = t->bond_owner;
+  double big = 0, local = 0;
+  PetscInt big_b = -1;
   for (PetscInt b = 0; b < nb; b++) {
     const PetscInt i = bond[b][0], j = bond[b][1], ty = type[b];
     if (owner[ty] != self) /* another module's bond type */
       continue;
     const double dd[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r = sqrt(dd[0] * dd[0] + dd[1] * dd[1]);
-    const double f = fabs(r - R0[ty]) / L[ty];
-    if (f > worst) { /* rare: no PETSc call in the loop, the check follows it */
-      worst = f;
-      worst_b = b;
+    if (force) {
+      const double f = fabs(r - R0[ty]) / L[ty];
+      if (f > big) { /* rare: no PETSc call in the loop, the check follows it */
+        big = f;
+        big_b = b;
+      }
     }
-    const double fr = bond_nonlinear_iact(K[ty], R0[ty], L[ty], r);
-    const double fi = fr / mass[i], fj = fr / mass[j];
-    a[i][0] += fi * dd[0];
-    a[i][1] += fi * dd[1];
-    a[j][0] -= fj * dd[0];
-    a[j][1] -= fj * dd[1];
+    if (force || virial) {
+      const double fr = bond_nonlinear_iact(K[ty], R0[ty], L[ty], r);
+      if (force) {
+        const double fi = fr / mass[i], fj = fr / mass[j];
+        a[i][0] += fi * dd[0];
+        a[i][1] += fi * dd[1];
+        a[j][0] -= fj * dd[0];
+        a[j][1] -= fj * dd[1];
+      }
+      if (virial)
+        virial_pair_add(W, i, j, fr, dd);
+    }
+    if (energy)
+      local += t->bond_weight[b] * bond_nonlinear_energy(K[ty], R0[ty], L[ty], r);
   }
-  PetscCall(PetscLogFlops(30.0 * (double)nb));
+  if (force) {
+    *worst = big;
+    *worst_b = big_b;
+  }
+  if (energy)
+    *e = local;
+}
+
+static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
+  bond_nonlinear_data *d = self->data;
+  const bond_params *p = &d->p;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  double worst = 0; /* largest |x|/r_max */
+  PetscInt worst_b = -1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(events.bond, 0, 0, 0, 0));
+  nonlinear_tally(self, s, 1, 0, 0, &worst, &worst_b, NULL, NULL);
+  PetscCall(PetscLogFlops(30.0 * (double)t->n_bond_local));
   PetscCall(PetscLogEventEnd(events.bond, 0, 0, 0, 0));
   if (worst_b < 0)
     PetscFunctionReturn(0);
@@ -146,37 +177,16 @@ static PetscErrorCode bond_nonlinear_compute(module *self, sim *s) {
 }
 
 static PetscErrorCode bond_nonlinear_energy_sum(module *self, sim *s, double *e) {
-  const bond_params *p = self->data;
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   double local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != self)
-      continue;
-    const double r = hypot(ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]);
-    local += t->bond_weight[b] * bond_nonlinear_energy(p->k[ty], p->r0[ty], p->rmax[ty], r);
-  }
+  nonlinear_tally(self, s, 0, 0, 1, NULL, NULL, NULL, &local);
   PetscCallMPI(MPI_Allreduce(&local, e, 1, MPI_DOUBLE, MPI_SUM, s->comm));
   PetscFunctionReturn(0);
 }
 
-/* Pair virial of each bond: both ends get -1/2 d (x) F_i with F_i = fr d. */
 static PetscErrorCode bond_nonlinear_virial(module *self, sim *s, double (*W)[3]) {
-  const bond_nonlinear_data *dd = self->data;
-  const bond_params *p = &dd->p;
-  const topology *t = s->topo;
-  const particles *ps = &s->ps;
   PetscFunctionBeginUser;
-  for (PetscInt b = 0; b < t->n_bond_local; b++) {
-    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
-    if (t->bond_owner[ty] != self)
-      continue;
-    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
-    const double fr = bond_nonlinear_iact(p->k[ty], p->r0[ty], p->rmax[ty], hypot(d[0], d[1]));
-    virial_pair_add(W, i, j, fr, d);
-  }
+  nonlinear_tally(self, s, 0, 1, 0, NULL, NULL, W, NULL);
   PetscFunctionReturn(0);
 }
 
