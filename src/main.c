@@ -1,8 +1,8 @@
 /* dmhs: Discrete Multi-Hybrid System solver (SPH liquid + mass-spring solids).
- * PetscInitialize -> sim_create -> sim_run -> sim_destroy -> PetscFinalize. */
+ * PetscInitialize -> run_create -> run_steps -> run_destroy -> PetscFinalize. */
 #include <string.h>
 #include <strings.h>
-#include "dmhs/driver.h"
+#include "dmhs/run.h"
 #include "dmhs/io.h"
 #include "dmhs/options_files.h"
 #include "dmhs/console_log.h"
@@ -84,7 +84,7 @@ static int stray_argument(int argc, char **argv) {
 }
 
 int main(int argc, char **argv) {
-  sim *s = NULL;
+  dmhs_run *r = NULL;
   PetscBool help_only = PETSC_FALSE, traceback = PETSC_FALSE;
   PetscErrorCode ierr;
   PetscMPIInt size;
@@ -101,7 +101,7 @@ int main(int argc, char **argv) {
         argv[stray], stray);
     return 1;
   }
-  /* -help: dmhs lists its own options (sim_create); PETSc would add its banner,
+  /* -help: dmhs lists its own options (run_create); PETSc would add its banner,
    * its generic options and every section again, so it does not see it */
   int kept = 1;
   for (int k = 1; k < argc; k++) {
@@ -132,18 +132,18 @@ int main(int argc, char **argv) {
     options_files_free();
     return 1;
   }
-  /* rank 0's console, copied into <output_dir>/dmhs.log once that exists (sim_create) */
+  /* rank 0's console, copied into <output_dir>/dmhs.log once that exists (run_create) */
   PetscCall(console_log_start(PETSC_COMM_WORLD));
   PetscCall(options_get_bool(NULL, NULL, "-dmhs_traceback", &traceback, NULL));
   if (traceback)
     PetscCall(PetscPushErrorHandler(PetscTraceBackErrorHandler, NULL));
   if (help_only)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", help));
-  ierr = sim_create(PETSC_COMM_WORLD, &s, &help_only);
+  ierr = run_create(PETSC_COMM_WORLD, &r, &help_only);
   if (!ierr && !help_only)
-    ierr = sim_run(s);
+    ierr = run_steps(r);
   if (ierr) {
-    io_record_error(s, first_error); /* run.json: status "error" (best effort) */
+    io_record_error(r ? r->core : NULL, first_error); /* run.json: status "error" (best effort) */
     /* one rank alone can fail (a particle's NaN): only an abort frees the others */
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     if (size > 1)
@@ -153,7 +153,7 @@ int main(int argc, char **argv) {
     options_files_free();
     return 1;
   }
-  PetscCall(sim_destroy(&s));
+  PetscCall(run_destroy(&r));
   if (traceback)
     PetscCall(PetscPopErrorHandler());
   PetscCall(PetscFinalize()); /* -log_view prints here: still copied to dmhs.log */

@@ -5,7 +5,8 @@
  *                      scene, options, physics_options (every physics option's
  *                      value, "name value" lines: options_physics), n_ranks,
  *                      n_particles, step, t, dt,
- *                      next_output_t, next_progress_t, snapshot_index,
+ *                      next_output_t, next_progress_t (the driver's, io_checkpoint_keep_real),
+ *                      snapshot_index,
  *                      diagnostics_sampled (per registered diagnostic, 1 if it
  *                      sampled at this step; absent in older files: all)
  *   /particles/<field> every FIELD_CHECKPOINT field at its native width

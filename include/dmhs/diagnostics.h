@@ -18,13 +18,13 @@ PetscErrorCode diagnostics_add(struct sim *s, diagnostic *d);
 /* The registered diagnostic of that name, or NULL. */
 diagnostic *diagnostics_find(const struct sim *s, const char *name);
 /* Whether the current step is an output time (step 0 included, and the final output of a run
- * whose last step was not one). */
+ * whose last step was not one): sim's output_step, which the driver's schedule sets. */
 PetscBool diagnostic_output_time(const struct sim *s);
 /* Whether d samples at the current step (its schedule, then its own due). */
 PetscBool diagnostic_is_due(const diagnostic *d, const struct sim *s);
 /* Samples every due diagnostic, in registration order. Collective. */
 PetscErrorCode diagnostics_sample(struct sim *s);
-/* The final output of a run whose last step was not an output time (sim's final_output set):
+/* The final output of a run whose last step was not an output time (sim's output_step set):
  * samples every at_outputs diagnostic that did not sample at this step. Collective. */
 PetscErrorCode diagnostics_sample_final(struct sim *s);
 /* Every diagnostic's end-of-run report, in registration order. Collective. */

@@ -24,6 +24,14 @@ typedef struct io_attribute {
   double value;
 } io_attribute;
 
+/* A value of an upper layer that checkpoints keep and a restart gives back
+ * (io_checkpoint_keep_real): the driver's next output and progress times. */
+#define IO_KEPT_REALS 4
+typedef struct io_kept_real {
+  const char *name; /* the checkpoint's attribute */
+  double *value;
+} io_kept_real;
+
 typedef struct io_state {
   /* options */
   PetscBool snapshots;                   /* -output_snapshots */
@@ -35,6 +43,7 @@ typedef struct io_state {
   char *restart_changes;                 /* what differed from the checkpoint's options, or NULL */
   /* state */
   PetscBool restarted;           /* the state was read from restart_file */
+  double dt_options;             /* the options' dt, which a restart replaces by its own */
   double restart_t;              /* t when this session's step loop started [s] */
   PetscInt snapshot_index;       /* number of the next snapshot file */
   double next_checkpoint_t;      /* [s] */
@@ -55,21 +64,35 @@ typedef struct io_state {
   PetscBool csv_keep_restart_rows;
   io_attribute snapshot_attributes[IO_SNAPSHOT_ATTRIBUTES]; /* the modules' (see above) */
   int n_snapshot_attributes;
+  char output_dir[PETSC_MAX_PATH_LEN]; /* where every file goes (io_set_output_dir) */
+  io_kept_real kept[IO_KEPT_REALS];    /* the callers' values a checkpoint keeps */
+  int n_kept;
 } io_state;
 
-/* Options pass; also called for -help. Must run before the scene is built. */
+/* The directory every output file of the run goes to; the driver creates it first. */
+PetscErrorCode io_set_output_dir(struct sim *s, const char *dir);
+/* A checkpoint keeps *value under name, and a restart (io_restart_read) sets *value from it. */
+PetscErrorCode io_checkpoint_keep_real(struct sim *s, const char *name, double *value);
 /* <output_dir>/<name>: where every output file of the run goes. */
 PetscErrorCode io_output_path(const struct sim *s, const char *name, char *path, size_t len);
+/* Options pass; also called for -help. Must run before the scene is built. */
 PetscErrorCode io_set_from_options(struct sim *s);
 /* After the output directory exists: run.json ("running"), signal handlers. */
 PetscErrorCode io_setup(struct sim *s);
-/* With -restart: replaces the particle state, step, t, dt and module state by the
- * checkpoint's, then rebuilds ghosts and pairs (no force evaluation: the next
- * kick uses the restored a and drho). No-op otherwise. */
-PetscErrorCode io_restart(struct sim *s);
+/* The restart sequence, in the driver's order: io_restart_read, the driver's neighbour
+ * rebuild and state check, io_restart_continue.
+ * With -restart: replaces the particle state, step, t, dt, module state and the values kept
+ * (io_checkpoint_keep_real) by the checkpoint's (a and drho too: the next kick uses them, no
+ * force evaluation); refuses a -t_end not after it. No-op otherwise. */
+PetscErrorCode io_restart_read(struct sim *s);
+/* After a restart's neighbour rebuild: says where the run continues, removes the snapshots
+ * written after the checkpoint and indexes those before it; in any run, the session's start
+ * time and the next checkpoint time. */
+PetscErrorCode io_restart_continue(struct sim *s);
 /* At an output time (and t = 0): snapshot + XDMF index, unless -output_snapshots false or
- * the output's number (t / output_interval) is not a multiple of -snapshot_every. */
-PetscErrorCode io_output(struct sim *s);
+ * the output's number (the driver's: t / output_interval, the same across a restart) is not
+ * a multiple of -snapshot_every; the run's last output (last) always writes one. */
+PetscErrorCode io_output(struct sim *s, PetscInt64 output_number, PetscBool last);
 /* After every step (and before the first), on every rank: checkpoint at the interval or on a
  * stop signal (stop_signal.h); any_signal is the one any rank got (the step loop reduced
  * stop_signal_pending() over the ranks), 0 if none: then *stop, and run.json says

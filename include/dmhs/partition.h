@@ -23,6 +23,7 @@ typedef struct partition {
                          periodic boundary: only their particles can be ghosts anywhere */
   /* options */
   double imbalance_max; /* -partition_imbalance: repartition above this max/mean */
+  PetscBool quiet;      /* no "repartitioned" line (the driver's -quiet) */
   PetscInt interval;    /* -partition_interval: steps between imbalance checks (0 = never) */
   /* state */
   double imbalance; /* max/mean owned work (particles + bonded partners) at the last check */

@@ -36,16 +36,17 @@ typedef struct progress_clock {
 } progress_clock;
 
 struct sim;
+struct run_control;
 /* -progress_interval, -progress_wall_interval, -quiet (in the run-control section). */
-PetscErrorCode progress_set_from_options(struct sim *s);
+PetscErrorCode progress_set_from_options(struct sim *s, struct run_control *rc);
 /* At the start of the step loop: the session's first step and clock. */
-void progress_start(struct sim *s);
+void progress_start(struct sim *s, struct run_control *rc);
 /* Rank 0's clock: is a wall-clock line due? (Plain: the step loop reduces the answer.) */
-PetscBool progress_wall_due(const struct sim *s);
+PetscBool progress_wall_due(const struct run_control *rc);
 /* After a step, on every rank with the same wall_due: the status line (and the projection)
  * when one is due, unless -quiet, and then the heartbeat. */
-PetscErrorCode progress_after_step(struct sim *s, PetscBool wall_due);
+PetscErrorCode progress_after_step(struct sim *s, struct run_control *rc, PetscBool wall_due);
 /* Final line, always printed (also with -quiet): includes "particle-steps/s: <value>". */
-PetscErrorCode progress_summary(struct sim *s);
+PetscErrorCode progress_summary(struct sim *s, const struct run_control *rc);
 
 #endif

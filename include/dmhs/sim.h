@@ -1,8 +1,9 @@
 /* struct sim, the core state: domain, particles, ghosts, cells, topology, the enabled
- * modules, the clock and the step's sub-steps. The upper layers' own state (io's, the
- * driver's time-step control and progress clock, the scene) is theirs: sim only points to
- * it, through forward-declared structs, and a file that reads it includes its header. The
- * run (setup, the step loop) is the driver's (src/driver/run.c, driver.h); neighbour
+ * modules, the time and the step's sub-steps. The upper layers' own state (io's, the
+ * scene) is theirs: sim only points to it, through forward-declared structs, and a file that
+ * reads it includes its header; the driver's run control (time step, output schedule,
+ * progress) is the driver's alone (run_control.h). The
+ * run (setup, the step loop) is the driver's (src/driver/run.c, run.h); neighbour
  * handling is neighbours.c. */
 #ifndef DMHS_SIM_H
 #define DMHS_SIM_H
@@ -21,14 +22,11 @@
 
 #define SIM_MAX_MODULES 16
 
-typedef enum { PREFLIGHT_ERROR, PREFLIGHT_WARN } preflight_action;
-extern const char *const preflight_action_names[];
-
 typedef struct sim {
   MPI_Comm comm;
   PetscMPIInt rank, size;
 
-  /* run control */
+  /* the time: the driver's run control (run_control.h) advances it */
   double t, dt, t_end;
   PetscBool t_end_given; /* -t_end was given: a scene's default does not apply */
   PetscInt step;
@@ -36,15 +34,9 @@ typedef struct sim {
   double t_anchor;
   PetscInt step_anchor;
   substep_plan substeps; /* the solids' sub-steps of this step (set by timestep.c) */
-  double output_interval, next_output_t; /* physical time between output rows/snapshots */
-  PetscInt last_output_step; /* the step of the last output (-1: none in this session) */
-  PetscBool final_output;    /* the run's final output, its last step not an output time */
-  double progress_interval, next_progress_t;
-  struct progress_clock *progress; /* the driver's: wall-clock lines, projection (progress.c) */
-  char output_dir[PETSC_MAX_PATH_LEN];
-  PetscBool quiet;
-  preflight_action preflight;
-  struct timestep *ts; /* the driver's: fixed-dt check or automatic dt (timestep.c) */
+  /* this step's state is an output: rows at outputs, a snapshot (set by the driver's schedule
+   * around the step's diagnostics and output, diagnostic_output_time) */
+  PetscBool output_step;
 
   /* state */
   domain dom;
@@ -81,9 +73,8 @@ typedef struct sim {
   diagnostic *diagnostics[SIM_MAX_DIAGNOSTICS];
   int n_diagnostics;
 
-  /* timing */
+  /* timing: the step loop's wall clock */
   double loop_start_wtime, loop_seconds;
-  PetscInt64 particle_steps; /* owned particles x steps, summed over ranks */
 
   /* snapshots, checkpoints, restart, run.json (src/io/io.c) */
   struct io_state *io;

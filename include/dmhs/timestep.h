@@ -34,7 +34,11 @@ struct dt_limits;
 /* -dt_min 0: this fraction of the first automatic dt */
 #define DT_MIN_FRACTION 1e-3
 
+typedef enum { PREFLIGHT_ERROR, PREFLIGHT_WARN } preflight_action;
+extern const char *const preflight_action_names[];
+
 typedef struct timestep {
+  preflight_action on_exceeded;    /* -preflight: a limit exceeded stops the run or warns */
   PetscBool adaptive;              /* -dt 0 (set by timestep_choose_first) */
   PetscBool automatic_options_set; /* -dt_safety, -dt_growth or -dt_min was given */
   double safety;                   /* -dt_safety [1] */
@@ -49,15 +53,15 @@ typedef struct timestep {
 } timestep;
 
 /* -dt, -dt_safety, -dt_growth, -dt_min, -solid_substeps. */
-PetscErrorCode timestep_set_from_options(struct sim *s);
+PetscErrorCode timestep_set_from_options(struct sim *s, timestep *ts);
 /* Every enabled module's limits for the current state. */
 PetscErrorCode timestep_collect_limits(struct sim *s, struct dt_limits *l);
 /* Pre-flight, with -dt 0: the first dt from the limits at t = 0 (and the
  * default floor). */
-PetscErrorCode timestep_choose_first(struct sim *s, const struct dt_limits *l);
+PetscErrorCode timestep_choose_first(struct sim *s, timestep *ts, const struct dt_limits *l);
 /* Before each step: the limits from the current state; checks (fixed dt) or
  * adapts (automatic) dt. */
-PetscErrorCode timestep_before_step(struct sim *s);
+PetscErrorCode timestep_before_step(struct sim *s, timestep *ts);
 /* After the drift: step + 1 and its time. */
 void timestep_advance(struct sim *s);
 /* The dt a limit is compared with: dt/N for the solids' own limits when
@@ -65,8 +69,8 @@ void timestep_advance(struct sim *s);
 double timestep_dt_for(const struct sim *s, PetscBool inner);
 /* Pre-flight: every module's limits against dt (and the modules' own checks); stops the run
  * on a problem unless -preflight warn. */
-PetscErrorCode timestep_stability_report(struct sim *s);
+PetscErrorCode timestep_stability_report(struct sim *s, timestep *ts);
 /* Closes dt.csv. */
-PetscErrorCode timestep_finish(struct sim *s);
+PetscErrorCode timestep_finish(timestep *ts);
 
 #endif

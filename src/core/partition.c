@@ -291,7 +291,7 @@ PetscErrorCode partition_check(partition *p, sim *s) {
     PetscFunctionReturn(0);
   const double before = p->imbalance;
   PetscCall(partition_compute(p, s));
-  if (!s->quiet)
+  if (!p->quiet)
     PetscCall(PetscPrintf(s->comm,
                           "partition: step %" PetscInt_FMT
                           ": imbalance %.3f > %.3f (-partition_imbalance), "

@@ -55,8 +55,7 @@ PetscErrorCode diagnostics_add(sim *s, diagnostic *d) {
 }
 
 PetscBool diagnostic_output_time(const sim *s) {
-  return s->step == 0 || s->final_output || s->t >= s->next_output_t - 0.5 * s->dt ? PETSC_TRUE
-                                                                                   : PETSC_FALSE;
+  return s->output_step;
 }
 
 PetscBool diagnostic_is_due(const diagnostic *d, const sim *s) {

@@ -5,18 +5,18 @@
 #include "dmhs/sim.h"
 #include "dmhs/scene.h"
 #include "dmhs/io.h"
-#include "dmhs/timestep.h"
 #include "dmhs/sph.h"
 #include "dmhs/progress.h"
+#include "dmhs/run_control.h"
 
-PetscErrorCode progress_set_from_options(sim *s) {
-  progress_clock *pc = s->progress;
+PetscErrorCode progress_set_from_options(sim *s, run_control *rc) {
+  progress_clock *pc = &rc->progress;
   PetscFunctionBeginUser;
   pc->wall_interval = PROGRESS_WALL_INTERVAL_DEFAULT;
   PetscOptionsBegin(s->comm, NULL, "dmhs run control", NULL);
   PetscCall(options_read_real("-progress_interval",
                               "Physical time between progress lines [s] (0 = t_end/20)", NULL,
-                              s->progress_interval, &s->progress_interval, NULL));
+                              rc->progress_interval, &rc->progress_interval, NULL));
   PetscCall(options_run_control("-progress_interval"));
   PetscCall(options_read_real(
       "-progress_wall_interval",
@@ -25,25 +25,25 @@ PetscErrorCode progress_set_from_options(sim *s) {
       NULL, pc->wall_interval, &pc->wall_interval, NULL));
   PetscCall(options_run_control("-progress_wall_interval"));
   PetscCall(
-      options_read_bool("-quiet", "Silence the progress lines", NULL, s->quiet, &s->quiet, NULL));
+      options_read_bool("-quiet", "Silence the progress lines", NULL, rc->quiet, &rc->quiet, NULL));
   PetscCall(options_run_control("-quiet"));
   PetscOptionsEnd();
-  PetscCheck(s->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-progress_interval must be >= 0 s (got %g)", s->progress_interval);
+  PetscCheck(rc->progress_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-progress_interval must be >= 0 s (got %g)", rc->progress_interval);
   PetscCheck(pc->wall_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-progress_wall_interval must be >= 0 s (got %g; 0 = no wall-clock lines)",
              pc->wall_interval);
   PetscFunctionReturn(0);
 }
 
-void progress_start(sim *s) {
-  s->progress->first_step = s->step;
-  s->progress->last_line_wtime = s->loop_start_wtime;
-  s->progress->any_line = PETSC_FALSE;
+void progress_start(sim *s, run_control *rc) {
+  rc->progress.first_step = s->step;
+  rc->progress.last_line_wtime = s->loop_start_wtime;
+  rc->progress.any_line = PETSC_FALSE;
 }
 
-PetscBool progress_wall_due(const sim *s) {
-  const progress_clock *pc = s->progress;
+PetscBool progress_wall_due(const run_control *rc) {
+  const progress_clock *pc = &rc->progress;
   if (pc->wall_interval <= 0)
     return PETSC_FALSE;
   const double wait =
@@ -59,9 +59,9 @@ typedef struct {
   double seconds_spent; /* since the step loop started */
 } progress_outlook;
 
-static progress_outlook progress_look_ahead(const sim *s) {
+static progress_outlook progress_look_ahead(const sim *s, const run_control *rc) {
   progress_outlook o;
-  const PetscInt done = s->step - s->progress->first_step;
+  const PetscInt done = s->step - rc->progress.first_step;
   /* the loop stops at the step nearest t_end: the first t >= t_end - dt/2 */
   const double to_go = (s->t_end - s->t) / s->dt - 0.5;
   o.steps_left = to_go > 0 ? ceil(to_go) : 0.0;
@@ -94,11 +94,11 @@ static void progress_format_clock(double seconds, char *text, size_t len) {
     snprintf(text, len, "?");
 }
 
-static double particle_steps_per_second(const sim *s, double seconds) {
-  return seconds > 0 ? (double)s->particle_steps / seconds : 0.0;
+static double particle_steps_per_second(const run_control *rc, double seconds) {
+  return seconds > 0 ? (double)rc->particle_steps / seconds : 0.0;
 }
 
-static PetscErrorCode progress_print(sim *s, const progress_outlook *o) {
+static PetscErrorCode progress_print(sim *s, const run_control *rc, const progress_outlook *o) {
   const particles *ps = &s->ps;
   const sph_params *sp = sph_params_get(s); /* NULL: no liquid (solids only) */
   double local[2] = {0, 0}, global[2];
@@ -117,14 +117,15 @@ static PetscErrorCode progress_print(sim *s, const progress_outlook *o) {
                         "step %8" PetscInt_FMT
                         "  t %.6e s  dt %.3e s (%s)  particle-steps/s %.3e  ETA %s (%s)  "
                         "max|v| %.3e m/s  max|rho/rho0-1| %.2e  imbalance %.3f\n",
-                        s->step, s->t, s->dt, s->ts->binding[0] ? s->ts->binding : "no limit",
-                        particle_steps_per_second(s, o->seconds_spent), eta, ends, sqrt(global[0]),
+                        s->step, s->t, s->dt, rc->ts.binding[0] ? rc->ts.binding : "no limit",
+                        particle_steps_per_second(rc, o->seconds_spent), eta, ends, sqrt(global[0]),
                         global[1], s->part.imbalance));
   PetscFunctionReturn(0);
 }
 
 /* After the first steps: how many steps the run takes, how long and when it ends. */
-static PetscErrorCode progress_print_projection(sim *s, const progress_outlook *o) {
+static PetscErrorCode progress_print_projection(sim *s, const run_control *rc,
+                                                const progress_outlook *o) {
   const double steps_total = (double)s->step + o->steps_left;
   char total[32], left[32], ends[32], t_end[32];
   PetscFunctionBeginUser;
@@ -137,26 +138,26 @@ static PetscErrorCode progress_print_projection(sim *s, const progress_outlook *
       "projection after %d steps: %.0f steps to t_end = %s s, %s of wall time (%s to go at "
       "%.3e s per step), ending about %s local time%s\n",
       PROGRESS_PROJECTION_STEPS, steps_total, t_end, total, left, o->step_seconds, ends,
-      s->ts->adaptive ? "; the automatic dt changes with the state, and the count with it" : ""));
+      rc->ts.adaptive ? "; the automatic dt changes with the state, and the count with it" : ""));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode progress_after_step(sim *s, PetscBool wall_due) {
-  progress_clock *pc = s->progress;
+PetscErrorCode progress_after_step(sim *s, run_control *rc, PetscBool wall_due) {
+  progress_clock *pc = &rc->progress;
   PetscFunctionBeginUser;
   const PetscBool interval_due =
-      s->t >= s->next_progress_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
+      s->t >= rc->next_progress_t - 0.5 * s->dt ? PETSC_TRUE : PETSC_FALSE;
   const PetscBool projection_due =
       s->step - pc->first_step == PROGRESS_PROJECTION_STEPS ? PETSC_TRUE : PETSC_FALSE;
   if (interval_due)
-    s->next_progress_t += s->progress_interval;
+    rc->next_progress_t += rc->progress_interval;
   if (!interval_due && !projection_due && !wall_due)
     PetscFunctionReturn(0);
-  if (!s->quiet) {
-    const progress_outlook o = progress_look_ahead(s); /* one clock reading for both lines */
-    PetscCall(progress_print(s, &o));
+  if (!rc->quiet) {
+    const progress_outlook o = progress_look_ahead(s, rc); /* one clock reading for both lines */
+    PetscCall(progress_print(s, rc, &o));
     if (projection_due)
-      PetscCall(progress_print_projection(s, &o));
+      PetscCall(progress_print_projection(s, rc, &o));
   }
   pc->last_line_wtime = MPI_Wtime();
   pc->any_line = PETSC_TRUE;
@@ -164,7 +165,7 @@ PetscErrorCode progress_after_step(sim *s, PetscBool wall_due) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode progress_summary(sim *s) {
+PetscErrorCode progress_summary(sim *s, const run_control *rc) {
   PetscInt n_owned = s->ps.n_owned, n_total;
   char t_text[32];
   PetscFunctionBeginUser;
@@ -176,6 +177,6 @@ PetscErrorCode progress_summary(sim *s) {
                   " steps to t = %s s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
                   "particle-steps/s: %.4e\n",
                   s->scn->name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds,
-                  s->loop_seconds, particle_steps_per_second(s, s->loop_seconds)));
+                  s->loop_seconds, particle_steps_per_second(rc, s->loop_seconds)));
   PetscFunctionReturn(0);
 }

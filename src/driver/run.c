@@ -14,10 +14,11 @@
 #include <string.h>
 #include <unistd.h>
 #include <sys/stat.h>
-#include "dmhs/driver.h"
+#include "dmhs/run.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/io.h"
 #include "dmhs/timestep.h"
+#include "dmhs/run_control.h"
 #include "dmhs/sim.h"
 #include "dmhs/neighbours.h"
 #include "dmhs/fields.h"
@@ -36,7 +37,7 @@
 const char *const preflight_action_names[] = {"error", "warn", "preflight_action", "PREFLIGHT_",
                                               NULL};
 
-static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len) {
+static PetscErrorCode run_set_from_options(sim *s, run_control *rc, char *scene_name, size_t len) {
   char names[256];
   PetscBool traceback = PETSC_FALSE; /* acted on by main, before any option is read here */
   PetscFunctionBeginUser;
@@ -46,16 +47,17 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
   PetscCall(
       options_read_real("-t_end", "End time [s]", NULL, s->t_end, &s->t_end, &s->t_end_given));
   PetscCall(options_run_control("-t_end"));
-  PetscCall(options_read_enum(
-      "-preflight", "When dt exceeds a stability limit: error (stop) or warn", NULL,
-      preflight_action_names, (PetscEnum)s->preflight, (PetscEnum *)&s->preflight, NULL));
+  PetscCall(options_read_enum("-preflight",
+                              "When dt exceeds a stability limit: error (stop) or warn", NULL,
+                              preflight_action_names, (PetscEnum)rc->ts.on_exceeded,
+                              (PetscEnum *)&rc->ts.on_exceeded, NULL));
   PetscCall(options_run_control("-preflight"));
   PetscCall(options_read_string("-output_dir", "Directory for every output file", NULL,
-                                s->output_dir, s->output_dir, sizeof(s->output_dir), NULL));
+                                rc->output_dir, rc->output_dir, sizeof(rc->output_dir), NULL));
   PetscCall(options_run_control("-output_dir"));
   PetscCall(options_read_real("-output_interval",
                               "Physical time between output rows/snapshots [s] (0 = t_end/100)",
-                              NULL, s->output_interval, &s->output_interval, NULL));
+                              NULL, rc->output_interval, &rc->output_interval, NULL));
   PetscCall(options_run_control("-output_interval"));
   PetscCall(options_read_real(
       "-neighbour_skin",
@@ -67,16 +69,17 @@ static PetscErrorCode sim_set_from_options(sim *s, char *scene_name, size_t len)
                               NULL, traceback, &traceback, NULL));
   PetscCall(options_run_control("-dmhs_traceback"));
   PetscOptionsEnd();
-  PetscCall(timestep_set_from_options(s));
+  PetscCall(timestep_set_from_options(s, &rc->ts));
   PetscCheck(s->t_end > 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE, "-t_end must be > 0 (got %g)",
              s->t_end);
   PetscCheck(s->skin_ratio >= 0 && s->skin_ratio <= 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-neighbour_skin must be in [0, 1] (got %g)", s->skin_ratio);
-  PetscCheck(s->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-output_interval must be >= 0 (got %g)", s->output_interval);
-  PetscCall(progress_set_from_options(s));
+  PetscCheck(rc->output_interval >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-output_interval must be >= 0 (got %g)", rc->output_interval);
+  PetscCall(progress_set_from_options(s, rc));
+  s->part.quiet = rc->quiet;
   /* run.json: how often a live run's heartbeat comes at the latest */
-  s->io->heartbeat_interval = s->progress->wall_interval;
+  s->io->heartbeat_interval = rc->progress.wall_interval;
   PetscFunctionReturn(0);
 }
 
@@ -112,12 +115,12 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode sim_prepare_output_dir(sim *s) {
+static PetscErrorCode run_prepare_output_dir(sim *s, const char *dir) {
   char probe[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   if (s->rank == 0) {
     char partial[PETSC_MAX_PATH_LEN];
-    PetscCall(PetscStrncpy(partial, s->output_dir, sizeof(partial)));
+    PetscCall(PetscStrncpy(partial, dir, sizeof(partial)));
     /* mkdir -p: each prefix in turn */
     for (char *c = partial + 1;; c++) {
       const char saved = *c;
@@ -125,15 +128,15 @@ static PetscErrorCode sim_prepare_output_dir(sim *s) {
         continue;
       *c = 0;
       PetscCheck(mkdir(partial, 0777) == 0 || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
-                 "-output_dir %s: cannot create %s: %s", s->output_dir, partial, strerror(errno));
+                 "-output_dir %s: cannot create %s: %s", dir, partial, strerror(errno));
       *c = saved;
       if (!saved)
         break;
     }
-    PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s/.dmhs-write-test", s->output_dir));
+    PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s/.dmhs-write-test", dir));
     FILE *f = fopen(probe, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir %s: not writable (%s)",
-               s->output_dir, strerror(errno));
+    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir %s: not writable (%s)", dir,
+               strerror(errno));
     fclose(f);
     unlink(probe);
   }
@@ -151,7 +154,7 @@ PetscErrorCode sim_compute_forces(sim *s) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode sim_view(sim *s) {
+static PetscErrorCode run_view(sim *s, const run_control *rc) {
   PetscViewer v = PETSC_VIEWER_STDOUT_(s->comm);
   PetscInt n_local[PTYPE_COUNT], n[PTYPE_COUNT];
   PetscFunctionBeginUser;
@@ -169,7 +172,7 @@ static PetscErrorCode sim_view(sim *s) {
       s->dom.hi[0], s->dom.lo[1], s->dom.hi[1], s->dom.periodic[0] ? "yes" : "no",
       s->dom.periodic[1] ? "yes" : "no", s->hal.width));
   PetscCall(PetscViewerASCIIPrintf(v, "run: t_end = %g s, output every %g s to %s/\n", s->t_end,
-                                   s->output_interval, s->output_dir));
+                                   rc->output_interval, rc->output_dir));
   for (int m = 0; m < s->n_modules; m++)
     if (s->modules[m]->view)
       PetscCall(s->modules[m]->view(s->modules[m], s, v));
@@ -186,29 +189,31 @@ static PetscErrorCode sim_view(sim *s) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
+PetscErrorCode run_create(MPI_Comm comm, dmhs_run **out, PetscBool *help_only) {
+  dmhs_run *r;
   sim *s;
   char scene_name[64] = "poiseuille";
   PetscBool help;
   PetscFunctionBeginUser;
   PetscCall(events_register());
   PetscCall(registry_initialize());
-  PetscCall(PetscNew(&s));
-  *out = s;
-  /* the layers' own state, which the core state only points to */
+  PetscCall(PetscNew(&r));
+  *out = r;
+  PetscCall(PetscNew(&r->core));
+  s = r->core;
+  run_control *rc = &r->control;
+  /* io's own state, which the core state only points to */
   PetscCall(PetscNew(&s->io));
-  PetscCall(PetscNew(&s->ts));
-  PetscCall(PetscNew(&s->progress));
   s->comm = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &s->rank));
   PetscCallMPI(MPI_Comm_size(comm, &s->size));
   /* io: from now on a stop signal waits for the first safe point (step 0) */
   PetscCall(stop_signal_install(s->rank));
-  s->last_output_step = -1;
+  rc->last_output_step = -1;
   s->t_end = 1.0;
   s->skin_ratio = 0.1;
-  s->preflight = PREFLIGHT_ERROR;
-  PetscCall(PetscStrncpy(s->output_dir, "output", sizeof(s->output_dir)));
+  rc->ts.on_exceeded = PREFLIGHT_ERROR;
+  PetscCall(PetscStrncpy(rc->output_dir, "output", sizeof(rc->output_dir)));
   PetscCall(particles_create(&s->ps));
   PetscCall(cells_create(&s->cel));
 
@@ -217,13 +222,17 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   *help_only = help = help || *help_only;
   PetscCall(PetscOptionsClearValue(NULL, "-help"));
-  PetscCall(sim_set_from_options(s, scene_name, sizeof(scene_name)));
+  PetscCall(run_set_from_options(s, rc, scene_name, sizeof(scene_name)));
   /* mpi: decomposition, migration check, halo check and final dump */
   PetscCall(partition_set_from_options(&s->part, s));
   PetscCall(migrate_set_from_options(&s->mig, s));
   PetscCall(halo_check_set_from_options(s));
   PetscCall(dump_set_from_options(s));
   PetscCall(io_set_from_options(s)); /* io: snapshots, checkpoints, -restart */
+  PetscCall(io_set_output_dir(s, rc->output_dir));
+  /* the schedule's next times: a restart continues it */
+  PetscCall(io_checkpoint_keep_real(s, "next_output_t", &rc->next_output_t));
+  PetscCall(io_checkpoint_keep_real(s, "next_progress_t", &rc->next_progress_t));
   if (help) {
     PetscCall(registry_print_help(s, scene_name));
     PetscCall(PetscLogStagePop());
@@ -235,10 +244,10 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   s->scene_name = s->scn->name;
   PetscCall(s->scn->set_from_options(s->scn, s));
   /* the intervals that follow t_end, once the scene has set its default (sim_default_t_end) */
-  if (s->output_interval == 0)
-    s->output_interval = s->t_end / 100;
-  if (s->progress_interval == 0)
-    s->progress_interval = s->t_end / 20;
+  if (rc->output_interval == 0)
+    rc->output_interval = s->t_end / 100;
+  if (rc->progress_interval == 0)
+    rc->progress_interval = s->t_end / 20;
   for (int m = 0; m < s->n_modules; m++) {
     const module *mod = s->modules[m];
     PetscCall(mod->set_from_options(s->modules[m], s));
@@ -252,9 +261,9 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
   }
   PetscCall(sim_check_unused_options(s));
 
-  PetscCall(sim_prepare_output_dir(s));
+  PetscCall(run_prepare_output_dir(s, rc->output_dir));
   /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
-  PetscCall(console_log_open(s->output_dir, s->io->restart_file));
+  PetscCall(console_log_open(rc->output_dir, s->io->restart_file));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(s->scn->build(s->scn, s));
   double reach = 0;
@@ -278,18 +287,25 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
       s->cel.no_pair_list = PETSC_FALSE;
   PetscCall(neighbours_collect_ghost_reads(s));
 
-  PetscCall(sim_view(s));
-  s->next_output_t = s->output_interval;
-  s->next_progress_t = s->progress_interval;
+  PetscCall(run_view(s, rc));
+  rc->next_output_t = rc->output_interval;
+  rc->next_progress_t = rc->progress_interval;
 
   /* the first neighbour build, then the limits at t = 0 (with the bonds' and angles' local
    * lists in place: asking a module's max_dt changes nothing), then the forces at t = 0 for
    * the first kick (the limits see no acceleration yet, as a restart's checkpoint does not) */
   PetscCall(neighbours_update(s, PETSC_TRUE));
-  PetscCall(timestep_stability_report(s));
+  PetscCall(timestep_stability_report(s, &rc->ts));
   PetscCall(sim_compute_forces(s));
   PetscCall(integrate_check_state(s));
-  PetscCall(io_restart(s)); /* io: with -restart, the checkpoint's state replaces the built one */
+  /* with -restart, the checkpoint's state replaces the built one: ghosts and pairs as the
+   * checkpointed run last built them, the state checked, then io's files follow */
+  PetscCall(io_restart_read(s));
+  if (s->io->restarted) {
+    PetscCall(neighbours_rebuild_as_last_built(s));
+    PetscCall(integrate_check_state(s));
+  }
+  PetscCall(io_restart_continue(s));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -297,26 +313,43 @@ PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only) {
 /* The state the run ends with, when its last step was not an output time (a shortened
  * -t_end, a stop signal): the end checkpoint first, so that a run continued from it never
  * sees what follows, then the at-output diagnostics' rows and a snapshot in the XDMF. */
-static PetscErrorCode sim_final_output(sim *s) {
+static PetscErrorCode run_final_output(sim *s, run_control *rc) {
   PetscFunctionBeginUser;
-  if (s->last_output_step == s->step)
+  if (rc->last_output_step == s->step)
     PetscFunctionReturn(0);
   PetscCall(io_checkpoint_at_end(s));
-  s->final_output = PETSC_TRUE;
+  s->output_step = PETSC_TRUE;
   PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
   PetscCall(diagnostics_sample_final(s));
   PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
-  PetscCall(io_output(s));
-  s->final_output = PETSC_FALSE;
-  s->last_output_step = s->step;
+  PetscCall(io_output(s, run_control_output_number(rc, s), PETSC_TRUE));
+  s->output_step = PETSC_FALSE;
+  rc->last_output_step = s->step;
+  PetscFunctionReturn(0);
+}
+
+/* An output of the schedule (step 0 or an output time): the diagnostics due, which see
+ * output_step, then the snapshot. */
+static PetscErrorCode run_diagnose_and_output(sim *s, run_control *rc, PetscBool output) {
+  PetscFunctionBeginUser;
+  s->output_step = output;
+  PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
+  PetscCall(diagnostics_sample(s));
+  PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
+  if (output) {
+    PetscCall(io_output(s, run_control_output_number(rc, s), run_control_at_end(s)));
+    rc->last_output_step = s->step;
+  }
+  s->output_step = PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
 /* What every rank must decide alike after a step, in the loop's one reduction: a stop signal
  * that any rank got, and whether rank 0's wall clock calls for a progress line (the ranks'
  * clocks differ). */
-static PetscErrorCode sim_agree_after_step(sim *s, int *stop_signal, PetscBool *progress_due) {
-  int mine[2] = {stop_signal_pending(), s->rank == 0 && progress_wall_due(s)}, all[2];
+static PetscErrorCode run_agree_after_step(const sim *s, const run_control *rc, int *stop_signal,
+                                           PetscBool *progress_due) {
+  int mine[2] = {stop_signal_pending(), s->rank == 0 && progress_wall_due(rc)}, all[2];
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, s->comm));
   *stop_signal = all[0];
@@ -324,7 +357,9 @@ static PetscErrorCode sim_agree_after_step(sim *s, int *stop_signal, PetscBool *
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode sim_run(sim *s) {
+PetscErrorCode run_steps(dmhs_run *r) {
+  sim *s = r->core;
+  run_control *rc = &r->control;
   PetscInt n_owned_global, n_local = s->ps.n_owned;
   PetscBool stop; /* io: checkpoint at the interval; on a stop signal also stop */
   PetscBool progress_due;
@@ -333,21 +368,17 @@ PetscErrorCode sim_run(sim *s) {
   PetscCallMPI(MPI_Allreduce(&n_local, &n_owned_global, 1, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscLogStagePush(events.stage_steps));
   /* io: a restarted run already diagnosed and wrote out this state */
-  if (!s->io->restarted) {
-    PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    PetscCall(diagnostics_sample(s));
-    PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
-    PetscCall(io_output(s));
-    s->last_output_step = s->step;
-  }
+  if (!s->io->restarted)
+    PetscCall(run_diagnose_and_output(s, rc, PETSC_TRUE));
   s->loop_start_wtime = MPI_Wtime();
-  progress_start(s);
+  progress_start(s, rc);
   /* a signal during the setup stops here, with a checkpoint of the initial state */
-  PetscCall(sim_agree_after_step(s, &stop_signal, &progress_due));
+  PetscCall(run_agree_after_step(s, rc, &stop_signal, &progress_due));
   PetscCall(io_after_step(s, stop_signal, &stop));
   /* stop at the step nearest t_end */
   while (!stop && s->t < s->t_end - 0.5 * s->dt) {
-    PetscCall(timestep_before_step(s)); /* the limits the state now sets: check or adapt dt */
+    PetscCall(
+        timestep_before_step(s, &rc->ts)); /* the limits the state now sets: check or adapt dt */
     if (s->substeps.on)
       PetscCall(substep_mark_members(s)); /* the rows that move on the sub-steps */
     PetscCall(integrate_first_half(s));
@@ -361,30 +392,25 @@ PetscErrorCode sim_run(sim *s) {
     for (int m = 0; m < s->n_modules; m++)
       if (s->modules[m]->post_step)
         PetscCall(s->modules[m]->post_step(s->modules[m], s));
-    s->particle_steps += n_owned_global;
+    rc->particle_steps += n_owned_global;
     if (s->scn->post_step)
       PetscCall(s->scn->post_step(s->scn, s));
-    /* before the output below: a diagnostic sees next_output_t of this step's output */
-    PetscCall(PetscLogEventBegin(events.diagnostics, 0, 0, 0, 0));
-    PetscCall(diagnostics_sample(s));
-    PetscCall(PetscLogEventEnd(events.diagnostics, 0, 0, 0, 0));
-    if (s->t >= s->next_output_t - 0.5 * s->dt) {
-      PetscCall(io_output(s)); /* io: snapshot + XDMF */
-      s->next_output_t += s->output_interval;
-      s->last_output_step = s->step;
-    }
-    PetscCall(sim_agree_after_step(s, &stop_signal, &progress_due));
-    PetscCall(progress_after_step(s, progress_due));
+    const PetscBool output = run_control_output_due(rc, s);
+    PetscCall(run_diagnose_and_output(s, rc, output));
+    if (output)
+      rc->next_output_t += rc->output_interval;
+    PetscCall(run_agree_after_step(s, rc, &stop_signal, &progress_due));
+    PetscCall(progress_after_step(s, rc, progress_due));
     PetscCall(io_after_step(s, stop_signal, &stop));
   }
   s->loop_seconds = MPI_Wtime() - s->loop_start_wtime;
-  PetscCall(sim_final_output(s));
+  PetscCall(run_final_output(s, rc));
   PetscCall(PetscLogStagePop());
   PetscCall(diagnostics_finish(s));
-  PetscCall(progress_summary(s));
+  PetscCall(progress_summary(s, rc));
   PetscCall(dump_final(s));              /* mpi */
   PetscCall(migrate_report(&s->mig, s)); /* mpi */
-  PetscCall(timestep_finish(s));
+  PetscCall(timestep_finish(&rc->ts));
   PetscCall(io_finish(s)); /* io: final checkpoint, run.json */
   PetscFunctionReturn(0);
 }
@@ -413,9 +439,16 @@ PetscErrorCode sim_destroy(sim **sp) {
   PetscCall(particles_destroy(&s->ps));
   PetscCall(registry_finalize());
   options_forget();
-  PetscCall(PetscFree(s->progress));
-  PetscCall(PetscFree(s->ts));
   PetscCall(PetscFree(s->io));
   PetscCall(PetscFree(*sp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode run_destroy(dmhs_run **rp) {
+  PetscFunctionBeginUser;
+  if (!*rp)
+    PetscFunctionReturn(0);
+  PetscCall(sim_destroy(&(*rp)->core));
+  PetscCall(PetscFree(*rp));
   PetscFunctionReturn(0);
 }

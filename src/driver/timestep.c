@@ -15,8 +15,7 @@ typedef enum { SUBSTEP_RESPA, SUBSTEP_HELD } substep_scheme;
 static const char *const substep_scheme_names[] = {"respa", "held", "substep_scheme", "SUBSTEP_",
                                                    NULL};
 
-PetscErrorCode timestep_set_from_options(sim *s) {
-  timestep *ts = s->ts;
+PetscErrorCode timestep_set_from_options(sim *s, timestep *ts) {
   PetscBool safety_set, growth_set, min_set;
   PetscFunctionBeginUser;
   ts->substeps_option = 1;
@@ -129,8 +128,7 @@ static double timestep_effective_limit(const timestep *ts, const dt_limits *l, i
 
 /* Sub-steps for the current dt: fixed, or the fewest that keep dt/N within
  * the safety fraction of the solids' smallest limit. */
-static PetscErrorCode timestep_choose_substeps(sim *s, const dt_limits *l) {
-  timestep *ts = s->ts;
+static PetscErrorCode timestep_choose_substeps(sim *s, timestep *ts, const dt_limits *l) {
   double inner = INFINITY;
   int which = -1;
   PetscFunctionBeginUser;
@@ -166,8 +164,7 @@ static void timestep_note_binding(timestep *ts, const dt_limits *l) {
     PetscStrncpy(ts->binding, l->item[which].name, sizeof(ts->binding));
 }
 
-PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
-  timestep *ts = s->ts;
+PetscErrorCode timestep_choose_first(sim *s, timestep *ts, const dt_limits *l) {
   int which;
   PetscFunctionBeginUser;
   ts->adaptive = s->dt <= 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -179,14 +176,14 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
   s->step_anchor = 0;
   timestep_note_binding(ts, l);
   if (!ts->adaptive) {
-    PetscCall(timestep_choose_substeps(s, l));
+    PetscCall(timestep_choose_substeps(s, ts, l));
     PetscFunctionReturn(0);
   }
   const double limit = timestep_effective_limit(ts, l, &which);
   PetscCheck(which >= 0, s->comm, PETSC_ERR_ARG_WRONG,
              "-dt 0 (automatic) needs at least one time-step limit, and no module gives one");
   s->dt = ts->safety * limit;
-  PetscCall(timestep_choose_substeps(s, l));
+  PetscCall(timestep_choose_substeps(s, ts, l));
   if (ts->dt_min <= 0)
     ts->dt_min = DT_MIN_FRACTION * s->dt;
   PetscCheck(s->dt >= ts->dt_min, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -200,8 +197,7 @@ PetscErrorCode timestep_choose_first(sim *s, const dt_limits *l) {
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode timestep_csv_row(sim *s) {
-  timestep *ts = s->ts;
+static PetscErrorCode timestep_csv_row(sim *s, timestep *ts) {
   PetscFunctionBeginUser;
   if (!ts->csv)
     PetscFunctionReturn(0);
@@ -217,19 +213,18 @@ static PetscErrorCode timestep_csv_row(sim *s) {
 /* dt.csv: the first evaluation of a run opens it; a fresh run records its
  * first dt, a restarted one keeps the rows before its step (it writes the row
  * of its own step again, if dt changes there). */
-static PetscErrorCode timestep_open_csv(sim *s) {
+static PetscErrorCode timestep_open_csv(sim *s, timestep *ts) {
   PetscFunctionBeginUser;
   const char *header = s->substeps.on ? "step,t,dt,limit,substeps\n" : "step,t,dt,limit\n";
-  PetscCall(csv_open_keeping(s, "dt.csv", header, (double)s->step - 0.5, &s->ts->csv));
+  PetscCall(csv_open_keeping(s, "dt.csv", header, (double)s->step - 0.5, &ts->csv));
   if (!s->io->restarted)
-    PetscCall(timestep_csv_row(s));
+    PetscCall(timestep_csv_row(s, ts));
   PetscFunctionReturn(0);
 }
 
 /* Fixed dt: every limit the state now sets must still hold (the solids' own
  * against dt/N when sub-cycling). */
-static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
-  timestep *ts = s->ts;
+static PetscErrorCode timestep_check_fixed(sim *s, timestep *ts, const dt_limits *l) {
   PetscFunctionBeginUser;
   for (int k = 0; k < l->n; k++) {
     const dt_limit *it = &l->item[k];
@@ -237,7 +232,7 @@ static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
     if (dt <= it->value * (1.0 + 1e-12))
       continue;
     const char *what = dt < s->dt ? "dt/substeps" : "dt";
-    PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+    PetscCheck(ts->on_exceeded == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
                "step %" PetscInt_FMT
                ", t = %g s: %s = %g s exceeds the %s limit %g s (%s) that the "
                "state now sets; lower -dt, use -dt 0 (automatic), or -preflight warn to run on",
@@ -254,8 +249,7 @@ static PetscErrorCode timestep_check_fixed(sim *s, const dt_limits *l) {
 }
 
 /* Automatic dt: the band, the growth bound and the floor; then the sub-steps. */
-static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
-  timestep *ts = s->ts;
+static PetscErrorCode timestep_adapt(sim *s, timestep *ts, const dt_limits *l) {
   int which;
   PetscFunctionBeginUser;
   const double limit = timestep_effective_limit(ts, l, &which);
@@ -275,7 +269,7 @@ static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
   const PetscInt n_sub_before = s->substeps.n;
   const PetscBool dt_changed = dt != s->dt ? PETSC_TRUE : PETSC_FALSE;
   s->dt = dt;
-  PetscCall(timestep_choose_substeps(s, l));
+  PetscCall(timestep_choose_substeps(s, ts, l));
   if (!dt_changed && s->substeps.n == n_sub_before)
     PetscFunctionReturn(0);
   if (dt_changed) {
@@ -283,27 +277,26 @@ static PetscErrorCode timestep_adapt(sim *s, const dt_limits *l) {
     s->step_anchor = s->step;
   }
   ts->n_changes++;
-  PetscCall(timestep_csv_row(s));
+  PetscCall(timestep_csv_row(s, ts));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode timestep_before_step(sim *s) {
-  timestep *ts = s->ts;
+PetscErrorCode timestep_before_step(sim *s, timestep *ts) {
   dt_limits limits;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(events.timestep, 0, 0, 0, 0));
   if ((ts->adaptive || ts->substeps_option == 0) && !ts->csv && !s->rank)
-    PetscCall(timestep_open_csv(s));
+    PetscCall(timestep_open_csv(s, ts));
   PetscCall(timestep_collect_limits(s, &limits));
   timestep_note_binding(ts, &limits);
   if (ts->adaptive)
-    PetscCall(timestep_adapt(s, &limits));
+    PetscCall(timestep_adapt(s, ts, &limits));
   else {
     const PetscInt n_sub_before = s->substeps.n;
-    PetscCall(timestep_choose_substeps(s, &limits));
+    PetscCall(timestep_choose_substeps(s, ts, &limits));
     if (s->substeps.n != n_sub_before)
-      PetscCall(timestep_csv_row(s));
-    PetscCall(timestep_check_fixed(s, &limits));
+      PetscCall(timestep_csv_row(s, ts));
+    PetscCall(timestep_check_fixed(s, ts, &limits));
   }
   PetscCall(PetscLogEventEnd(events.timestep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -315,18 +308,18 @@ void timestep_advance(sim *s) {
   s->t = s->t_anchor + (double)(s->step - s->step_anchor) * s->dt;
 }
 
-PetscErrorCode timestep_finish(sim *s) {
+PetscErrorCode timestep_finish(timestep *ts) {
   PetscFunctionBeginUser;
-  PetscCall(csv_close(&s->ts->csv, "dt.csv"));
+  PetscCall(csv_close(&ts->csv, "dt.csv"));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode timestep_stability_report(sim *s) {
+PetscErrorCode timestep_stability_report(sim *s, timestep *ts) {
   dt_limits limits = {0};
   int problems = 0;
   PetscFunctionBeginUser;
   PetscCall(timestep_collect_limits(s, &limits));
-  PetscCall(timestep_choose_first(s, &limits)); /* -dt 0: the first dt */
+  PetscCall(timestep_choose_first(s, ts, &limits)); /* -dt 0: the first dt */
   if (s->substeps.on)
     PetscCall(PetscPrintf(
         s->comm,
@@ -351,7 +344,7 @@ PetscErrorCode timestep_stability_report(sim *s) {
     const char *what =
         "dt exceeds a time-step limit or the kernel support holds too few neighbours "
         "(see the report above): lower -dt (or -dt 0 for automatic) / raise -sph_h";
-    PetscCheck(s->preflight == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+    PetscCheck(ts->on_exceeded == PREFLIGHT_WARN, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
                "pre-flight check failed: %s; -preflight warn runs anyway", what);
     PetscCall(PetscPrintf(s->comm, "WARNING: pre-flight check: %s (continuing: -preflight warn)\n",
                           what));

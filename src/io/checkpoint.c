@@ -195,8 +195,8 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
     PetscCall(h5io_put_int64s(tmp, fid, "dt_anchor_step", &step_anchor, 1));
     const PetscInt64 n_sub = s->substeps.n;
     PetscCall(h5io_put_int64s(tmp, fid, "solid_substeps", &n_sub, 1));
-    PetscCall(h5io_put_reals(tmp, fid, "next_output_t", &s->next_output_t, 1));
-    PetscCall(h5io_put_reals(tmp, fid, "next_progress_t", &s->next_progress_t, 1));
+    for (int k = 0; k < s->io->n_kept; k++) /* the driver's next output and progress times */
+      PetscCall(h5io_put_reals(tmp, fid, s->io->kept[k].name, s->io->kept[k].value, 1));
     /* which diagnostics sampled at this step: a restart keeps only their rows at its time
      * (a run that ends here samples the others once more after this checkpoint) */
     if (s->n_diagnostics) {
@@ -400,8 +400,8 @@ PetscErrorCode checkpoint_read(sim *s, const char *path) {
              "checkpoint %s: invalid solid_substeps %" PetscInt64_FMT, path, n_sub);
   /* the sub-steps of the step that wrote it, for the record of changes (dt.csv) */
   s->substeps.n = (PetscInt)n_sub;
-  PetscCall(h5io_get_reals(path, fid, "next_output_t", &s->next_output_t, 1));
-  PetscCall(h5io_get_reals(path, fid, "next_progress_t", &s->next_progress_t, 1));
+  for (int k = 0; k < s->io->n_kept; k++)
+    PetscCall(h5io_get_reals(path, fid, s->io->kept[k].name, s->io->kept[k].value, 1));
   PetscCheck(s->step_anchor >= 0 && s->step_anchor <= step, PETSC_COMM_SELF,
              PETSC_ERR_FILE_UNEXPECTED,
              "checkpoint %s: invalid dt_anchor_step %" PetscInt_FMT " (step %" PetscInt64_FMT ")",

@@ -1,5 +1,5 @@
 /* Output, checkpoints, restart and the run record: the glue between the step
- * loop (sim_run, src/driver/run.c) and snapshot.c, xdmf.c, checkpoint.c.
+ * loop (run_steps, src/driver/run.c) and snapshot.c, xdmf.c, checkpoint.c.
  *
  * Signals: SIGTERM, SIGINT and SIGUSR1 (what batch systems, timeout, mpirun and
  * Ctrl-C send) only set a flag (stop_signal.c, which also says when a repeat
@@ -26,17 +26,30 @@
 #include <time.h>
 #include <unistd.h>
 #include "dmhs/sim.h"
-#include "dmhs/neighbours.h"
 #include "dmhs/io.h"
 #include "dmhs/checkpoint.h"
 #include "dmhs/snapshot.h"
 #include "dmhs/xdmf.h"
 #include "dmhs/migrate.h"
-#include "dmhs/integrate.h"
 #include "dmhs/stop_signal.h"
 #include "dmhs/build_info.h"
 #include "h5check.h"
 #include "outdir.h"
+
+PetscErrorCode io_set_output_dir(sim *s, const char *dir) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(s->io->output_dir, dir, sizeof(s->io->output_dir)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_checkpoint_keep_real(sim *s, const char *name, double *value) {
+  io_state *io = s->io;
+  PetscFunctionBeginUser;
+  PetscCheck(io->n_kept < IO_KEPT_REALS, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "io_checkpoint_keep_real: more than %d values", IO_KEPT_REALS);
+  io->kept[io->n_kept++] = (io_kept_real){name, value};
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode io_set_from_options(sim *s) {
   io_state *io = s->io;
@@ -161,8 +174,8 @@ static void io_json_halo(FILE *f, const halo_stats *h) {
 static int io_write_run_json(const sim *s, const char *status, const char *message, int ended) {
   char path[PETSC_MAX_PATH_LEN + 16], now[32], checkpoint[PETSC_MAX_PATH_LEN + 16], *text = NULL;
   size_t text_len = 0;
-  snprintf(path, sizeof(path), "%s/run.json", s->output_dir);
-  snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->output_dir);
+  snprintf(path, sizeof(path), "%s/run.json", s->io->output_dir);
+  snprintf(checkpoint, sizeof(checkpoint), "%s/checkpoint.h5", s->io->output_dir);
   FILE *f = open_memstream(&text, &text_len);
   if (!f)
     return errno ? errno : ENOMEM;
@@ -234,7 +247,7 @@ static PetscErrorCode io_run_json(sim *s, const char *status, PetscBool ended) {
   if (s->rank == 0) {
     const int err = io_write_run_json(s, status, NULL, ended);
     PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
-               s->output_dir, strerror(err));
+               s->io->output_dir, strerror(err));
   }
   PetscFunctionReturn(0);
 }
@@ -250,7 +263,7 @@ PetscErrorCode io_heartbeat(sim *s) {
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR,
                            "dmhs: warning: cannot update %s/run.json (its heartbeat): %s; the run "
                            "goes on\n",
-                           s->output_dir, strerror(err)));
+                           s->io->output_dir, strerror(err)));
   s->io->heartbeat_failed = err ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
 }
@@ -259,7 +272,7 @@ void io_record_error(sim *s, const char *message) {
   if (!s || s->rank != 0 || !s->io->run_json_started)
     return;
   /* a write the error interrupted (disk full) leaves its temporary file */
-  (void)outdir_remove_tmp(s->output_dir);
+  (void)outdir_remove_tmp(s->io->output_dir);
   (void)io_write_run_json(s, "error", message && message[0] ? message : "see the error on stderr",
                           1);
 }
@@ -293,31 +306,31 @@ PetscErrorCode io_setup(sim *s) {
     PetscCall(PetscSNPrintf(io->host, sizeof(io->host), "unknown")); /* run.json says so */
   io->host[sizeof(io->host) - 1] = 0;
   if (s->rank == 0)
-    io_previous_status(s->output_dir, io->previous_status, sizeof(io->previous_status));
+    io_previous_status(s->io->output_dir, io->previous_status, sizeof(io->previous_status));
   if (s->rank == 0) {
     /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
-    const int n_tmp = outdir_remove_tmp(s->output_dir);
-    const int n_snap = io->restart_file[0] ? 0 : outdir_remove_snapshots(s->output_dir, 0);
+    const int n_tmp = outdir_remove_tmp(s->io->output_dir);
+    const int n_snap = io->restart_file[0] ? 0 : outdir_remove_snapshots(s->io->output_dir, 0);
     if (n_tmp || n_snap)
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
                             "output directory %s: removed %d unfinished .tmp file(s) and %d "
                             "snapshot/index file(s) of an earlier run\n",
-                            s->output_dir, n_tmp, n_snap));
+                            s->io->output_dir, n_tmp, n_snap));
   }
   PetscCall(io_run_json(s, "running", PETSC_FALSE));
   io->run_json_started = PETSC_TRUE;
   if (s->rank == 0)
     PetscCall(xdmf_create(&io->xdmf));
-  /* normally in place since sim_create began: a signal during the setup waits for step 0 */
+  /* normally in place since run_create began: a signal during the setup waits for step 0 */
   PetscCall(stop_signal_install(s->rank));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode io_restart(sim *s) {
+PetscErrorCode io_restart_read(sim *s) {
   io_state *io = s->io;
   PetscFunctionBeginUser;
   if (io->restart_file[0]) {
-    const double dt_options = s->dt;
+    io->dt_options = s->dt;
     PetscCall(checkpoint_read(s, io->restart_file));
     PetscCheck(
         s->t_end > s->t + 0.5 * s->dt, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -328,27 +341,33 @@ PetscErrorCode io_restart(sim *s) {
       /* run.json ("running") records what changed from the start */
       const int err = io_write_run_json(s, "running", NULL, 0);
       PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
-                 s->output_dir, strerror(err));
+                 s->io->output_dir, strerror(err));
     }
-    PetscCall(neighbours_rebuild_as_last_built(s));
-    PetscCall(integrate_check_state(s));
     io->restarted = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode io_restart_continue(sim *s) {
+  io_state *io = s->io;
+  PetscFunctionBeginUser;
+  if (io->restarted) {
     PetscCall(PetscPrintf(
         s->comm, "Restarted from %s at step %" PetscInt_FMT ", t = %.9g s, dt = %g s%s\n",
         io->restart_file, s->step, s->t, s->dt,
-        s->dt != dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
+        s->dt != io->dt_options ? " (the checkpoint's dt, not the one from the options)" : ""));
     if (s->rank == 0) {
       /* the snapshots the interrupted run wrote after its checkpoint are written again */
-      const int n = outdir_remove_snapshots(s->output_dir, (long)io->snapshot_index);
+      const int n = outdir_remove_snapshots(s->io->output_dir, (long)io->snapshot_index);
       if (n)
         PetscCall(PetscPrintf(
             PETSC_COMM_SELF,
             "output directory %s: removed %d snapshot file(s) written after the checkpoint\n",
-            s->output_dir, n));
+            s->io->output_dir, n));
     }
     if (s->rank == 0 && io->snapshots) {
       /* index the snapshots the interrupted run had written before the checkpoint */
-      PetscCall(xdmf_scan(io->xdmf, s->output_dir, io->snapshot_index));
+      PetscCall(xdmf_scan(io->xdmf, s->io->output_dir, io->snapshot_index));
     }
   }
   io->restart_t = s->t;
@@ -361,17 +380,14 @@ PetscErrorCode io_restart(sim *s) {
 
 /* ---- during the run ------------------------------------------------------ */
 
-PetscErrorCode io_output(sim *s) {
+PetscErrorCode io_output(sim *s, PetscInt64 output_number, PetscBool last) {
   io_state *io = s->io;
   char name[64], path[PETSC_MAX_PATH_LEN];
   PetscInt64 n, n_bonds;
   PetscFunctionBeginUser;
   if (!io->snapshots)
     PetscFunctionReturn(0);
-  /* the output's number from t, so that a restart keeps the same cadence */
-  const PetscInt64 k = (PetscInt64)PetscFloorReal(s->t / s->output_interval + 0.5);
-  const PetscBool last = s->final_output || s->t >= s->t_end - 0.5 * s->dt;
-  if (io->snapshot_every > 1 && !last && k % io->snapshot_every != 0)
+  if (io->snapshot_every > 1 && !last && output_number % io->snapshot_every != 0)
     PetscFunctionReturn(0);
   PetscCall(snapshot_write(s, io->snapshot_index, &n, &n_bonds));
   if (s->rank == 0) {

@@ -31,7 +31,6 @@ HEADER_LAYERS = {
     "diagnostic.h": "core",  # the diagnostic interface: io's checkpoint calls its hooks
     "scene.h": "scenes",  # the scene interface
     "scenes.h": "scenes",  # the scenes' constructors
-    "driver.h": "driver",  # sim_create, sim_run, sim_destroy (src/driver/run.c)
 }
 
 # The includes that run upward today; none. Take an entry out in the commit that removes its

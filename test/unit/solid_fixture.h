@@ -11,7 +11,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/neighbours.h"
 #include "dmhs/modules.h"
-#include "dmhs/driver.h"
+#include "dmhs/run.h"
 #include "dmhs/registry.h"
 #include "dmhs/events.h"
 #include "dmhs/integrate.h"
@@ -29,7 +29,6 @@ static inline sim *fixture_create(double lx, double ly, PetscBool periodic_x) {
   OK(PetscNew(&s));
   s->comm = PETSC_COMM_SELF;
   s->size = 1;
-  s->preflight = PREFLIGHT_ERROR;
   s->t_end = 1;
   OK(particles_create(&s->ps));
   OK(cells_create(&s->cel));
@@ -88,7 +87,7 @@ static inline void fixture_substeps(sim *s, PetscInt n) {
   }
 }
 
-/* One step as sim_run takes it (fixed dt, no migration). */
+/* One step as run_steps takes it (fixed dt, no migration). */
 static inline void fixture_step(sim *s) {
   if (s->substeps.on)
     OK(substep_mark_members(s));

@@ -1,8 +1,8 @@
 /* The diagnostic list (src/diag/diagnostics.c) and the diagnostics' part of
  * checkpoints (src/io/checkpoint.c). Proves:
  *   - the schedule: every N steps (step 0 included), at output times (step 0
- *     and t within dt/2 of next_output_t), not_at_start, a diagnostic's own
- *     due hook, and their union;
+ *     and, by the driver's schedule, t within dt/2 of next_output_t),
+ *     not_at_start, a diagnostic's own due hook, and their union;
  *   - diagnostics_sample runs the due ones only, in registration order, and
  *     diagnostics_finish every finish in that order;
  *   - a second diagnostic of a name, a name that would nest in the checkpoint
@@ -17,6 +17,7 @@
 #include "dmhs/io.h"
 #include "dmhs/diagnostics.h"
 #include "dmhs/checkpoint.h"
+#include "dmhs/run_control.h"
 
 /* what the test diagnostics did, in order: 'A' + index for a sample, 'a' + index for a finish */
 static char trace[64];
@@ -85,6 +86,7 @@ static diagnostic *probe_add(sim *s, const char *name, int index, diagnostic_sch
 
 static scene test_scene = {.name = "test"};
 static io_state test_io;
+static run_control test_schedule_rc = {.output_interval = 0.5, .next_output_t = 0.5};
 
 static void make_sim(sim *s) {
   OK(PetscMemzero(s, sizeof(*s)));
@@ -94,13 +96,18 @@ static void make_sim(sim *s) {
   s->scene_name = test_scene.name;
   s->io = &test_io;
   s->dt = 0.1;
-  s->next_output_t = 0.5;
+}
+
+/* sets step, t and whether the state is an output, as the driver does (step 0 always) */
+static void at_time(sim *s, PetscInt step, double t) {
+  s->step = step;
+  s->t = t;
+  s->output_step = step == 0 || run_control_output_due(&test_schedule_rc, s);
 }
 
 /* sets step and t = step dt */
 static void at_step(sim *s, PetscInt step) {
-  s->step = step;
-  s->t = (double)step * s->dt;
+  at_time(s, step, (double)step * s->dt);
 }
 
 static void test_schedule(void **state) {
@@ -128,10 +135,9 @@ static void test_schedule(void **state) {
     assert_int_equal(diagnostic_is_due(both, &s), out || step % 4 == 0);
   }
   /* just before the output time by more than dt/2: not yet */
-  at_step(&s, 4);
-  s.t = 0.5 - 0.051;
+  at_time(&s, 4, 0.5 - 0.051);
   assert_false(diagnostic_is_due(outputs, &s));
-  s.t = 0.5 - 0.049;
+  at_time(&s, 4, 0.5 - 0.049);
   assert_true(diagnostic_is_due(outputs, &s));
   /* lookup */
   at_step(&s, 0);

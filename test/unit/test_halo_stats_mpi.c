@@ -90,7 +90,7 @@ static void test_two_ranks(void **state) {
   if (s.size != 2)
     fail_msg("run on 2 ranks (mpirun -n 2), not %d", (int)s.size);
   s.scene_name = "unit";
-  s.quiet = PETSC_TRUE;
+  s.part.quiet = PETSC_TRUE;
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {PETSC_TRUE, PETSC_FALSE}};
   fields_reset();
   OK(particles_create(&s.ps));

@@ -132,7 +132,7 @@ static void test_partition_and_migrate(void **state) {
   if (s.size != 2)
     fail_msg("run on 2 ranks (mpirun -n 2), not %d", (int)s.size);
   s.scene_name = "unit";
-  s.quiet = PETSC_TRUE; /* no "repartitioned" line */
+  s.part.quiet = PETSC_TRUE; /* no "repartitioned" line */
   s.dom = (domain){.lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .periodic = {PETSC_TRUE, PETSC_FALSE}};
   s.hal.width = 0.125; /* 8 x 8 coarse cells */
   fields_reset();

@@ -1,15 +1,25 @@
 /* The driver (src/driver/run.c): a run from the options to the last output.
- * main: sim_create -> sim_run -> sim_destroy. */
-#ifndef DMHS_DRIVER_H
-#define DMHS_DRIVER_H
+ * main: run_create -> run_steps -> run_destroy. */
+#ifndef DMHS_RUN_H
+#define DMHS_RUN_H
 #include "dmhs/sim.h"
+#include "dmhs/run_control.h"
+
+/* A run: the core state and the driver's own run control (time step, output schedule,
+ * progress), which the layers below never see. */
+typedef struct dmhs_run {
+  sim *core;
+  run_control control;
+} dmhs_run;
 
 /* The options pass, the scene and its modules, the particles, ghosts and the pre-flight
  * report, forces at t = 0 (and a restart's state); help_only: -help was asked for and
  * listed, nothing else was set up. */
-PetscErrorCode sim_create(MPI_Comm comm, sim **out, PetscBool *help_only);
+PetscErrorCode run_create(MPI_Comm comm, dmhs_run **out, PetscBool *help_only);
 /* The step loop to t_end (or a stop signal), then the end-of-run reports and files. */
-PetscErrorCode sim_run(sim *s);
+PetscErrorCode run_steps(dmhs_run *r);
+PetscErrorCode run_destroy(dmhs_run **r);
+/* The core state's teardown (with what it points to: modules, scene, diagnostics, io). */
 PetscErrorCode sim_destroy(sim **s);
 /* The force evaluation of a step on the current positions: every enabled module (with
  * -solid_substeps, the solids' own share kept apart: substep.c). */
