@@ -67,8 +67,7 @@ typedef struct sim {
   topology *topo; /* bonds and angles (solids); NULL in scenes without solids */
   module *modules[SIM_MAX_MODULES];
   int n_modules;
-  struct scene *scn;      /* the scenes' interface (scene.h): only the driver calls it */
-  const char *scene_name; /* its name, for the lower layers' messages and files */
+  const char *scene_name; /* the scene's name, for messages and files (the driver has the scene) */
   /* what the scene measures, sampled after the steps of each one's schedule (diagnostic.h) */
   diagnostic *diagnostics[SIM_MAX_DIAGNOSTICS];
   int n_diagnostics;

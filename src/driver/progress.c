@@ -3,7 +3,6 @@
 #include <math.h>
 #include <time.h>
 #include "dmhs/sim.h"
-#include "dmhs/scene.h"
 #include "dmhs/io.h"
 #include "dmhs/sph.h"
 #include "dmhs/progress.h"
@@ -176,7 +175,7 @@ PetscErrorCode progress_summary(sim *s, const run_control *rc) {
                   "dmhs summary: scene %s, %" PetscInt_FMT " particles, %d rank(s), %" PetscInt_FMT
                   " steps to t = %s s, %" PetscInt_FMT " neighbour-list builds, step loop %.3f s, "
                   "particle-steps/s: %.4e\n",
-                  s->scn->name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds,
+                  s->scene_name, n_total, (int)s->size, s->step, t_text, s->n_rebuilds,
                   s->loop_seconds, particle_steps_per_second(rc, s->loop_seconds)));
   PetscFunctionReturn(0);
 }

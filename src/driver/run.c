@@ -99,7 +99,7 @@ static PetscErrorCode sim_check_unused_options(sim *s) {
       PetscCall(PetscSNPrintf(hint, sizeof(hint), " (did you mean %s?)", near));
     PetscCall(PetscPrintf(s->comm,
                           "dmhs: option %s %s was not used by scene '%s' or its modules%s\n", name,
-                          values[k] ? values[k] : "", s->scn->name, hint));
+                          values[k] ? values[k] : "", s->scene_name, hint));
     if (k == 0) {
       PetscCall(PetscStrncpy(first, name, sizeof(first)));
       PetscCall(PetscStrncpy(first_hint, hint, sizeof(first_hint)));
@@ -162,7 +162,7 @@ static PetscErrorCode run_view(sim *s, const run_control *rc) {
     n_local[t] = particles_count_type(&s->ps, (particle_type)t);
   PetscCallMPI(MPI_Allreduce(n_local, n, PTYPE_COUNT, MPIU_INT, MPI_SUM, s->comm));
   PetscCall(PetscViewerASCIIPrintf(v, "dmhs %s (commit %s): scene %s on %d rank(s)\n", DMHS_VERSION,
-                                   dmhs_commit, s->scn->name, (int)s->size));
+                                   dmhs_commit, s->scene_name, (int)s->size));
   PetscCall(PetscViewerASCIIPrintf(v,
                                    "particles: %" PetscInt_FMT " fluid, %" PetscInt_FMT
                                    " wall, %" PetscInt_FMT " solid; rest spacing dx = %g m\n",
@@ -240,9 +240,10 @@ PetscErrorCode run_create(MPI_Comm comm, dmhs_run **out, PetscBool *help_only) {
   }
 
   /* scene options (they set module defaults and enable modules), then modules' own */
-  PetscCall(registry_create_scene(scene_name, &s->scn));
-  s->scene_name = s->scn->name;
-  PetscCall(s->scn->set_from_options(s->scn, s));
+  PetscCall(registry_create_scene(scene_name, &r->scn));
+  scene *scn = r->scn;
+  s->scene_name = scn->name;
+  PetscCall(scn->set_from_options(scn, s));
   /* the intervals that follow t_end, once the scene has set its default (sim_default_t_end) */
   if (rc->output_interval == 0)
     rc->output_interval = s->t_end / 100;
@@ -265,7 +266,7 @@ PetscErrorCode run_create(MPI_Comm comm, dmhs_run **out, PetscBool *help_only) {
   /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
   PetscCall(console_log_open(rc->output_dir, s->io->restart_file));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
-  PetscCall(s->scn->build(s->scn, s));
+  PetscCall(scn->build(scn, s));
   double reach = 0;
   for (int m = 0; m < s->n_modules; m++) {
     reach = PetscMax(reach, s->modules[m]->reach);
@@ -393,8 +394,8 @@ PetscErrorCode run_steps(dmhs_run *r) {
       if (s->modules[m]->post_step)
         PetscCall(s->modules[m]->post_step(s->modules[m], s));
     rc->particle_steps += n_owned_global;
-    if (s->scn->post_step)
-      PetscCall(s->scn->post_step(s->scn, s));
+    if (r->scn->post_step)
+      PetscCall(r->scn->post_step(r->scn, s));
     const PetscBool output = run_control_output_due(rc, s);
     PetscCall(run_diagnose_and_output(s, rc, output));
     if (output)
@@ -426,11 +427,6 @@ PetscErrorCode sim_destroy(sim **sp) {
       PetscCall(s->modules[m]->destroy(s->modules[m]));
     PetscCall(PetscFree(s->modules[m]));
   }
-  if (s->scn) {
-    if (s->scn->destroy)
-      PetscCall(s->scn->destroy(s->scn));
-    PetscCall(PetscFree(s->scn));
-  }
   PetscCall(io_destroy(s));
   PetscCall(topology_destroy(&s->topo)); /* solids */
   PetscCall(halo_destroy(&s->hal));
@@ -448,7 +444,14 @@ PetscErrorCode run_destroy(dmhs_run **rp) {
   PetscFunctionBeginUser;
   if (!*rp)
     PetscFunctionReturn(0);
-  PetscCall(sim_destroy(&(*rp)->core));
+  dmhs_run *r = *rp;
+  PetscCall(
+      sim_destroy(&r->core)); /* first: its diagnostics and modules may hold the scene's data */
+  if (r->scn) {
+    if (r->scn->destroy)
+      PetscCall(r->scn->destroy(r->scn));
+    PetscCall(PetscFree(r->scn));
+  }
   PetscCall(PetscFree(*rp));
   PetscFunctionReturn(0);
 }

@@ -92,7 +92,6 @@ static void make_sim(sim *s) {
   OK(PetscMemzero(s, sizeof(*s)));
   s->comm = PETSC_COMM_SELF;
   s->size = 1;
-  s->scn = &test_scene;
   s->scene_name = test_scene.name;
   s->io = &test_io;
   s->dt = 0.1;
