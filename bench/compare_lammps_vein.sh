@@ -20,6 +20,8 @@
 # dmhs with another dt, e.g. the mean of a long run's dt.csv.
 # Environment:
 #   DMHS   the dmhs binary (default build/dmhs)
+#   DMHS_OPTS  more dmhs options after the input's, e.g. the multi-rate contact at this dx:
+#          "-solid_substeps 3 -repulsion_substeps -solid_substeps_scheme respa"
 #   LMP    a LAMMPS binary with the SPH and MOLECULE packages (default: lmp on PATH)
 #   OUT    keep the logs here (default: a temporary directory, removed)
 # One way to get LAMMPS without network access to GitHub (as bench/compare_lammps.sh):
@@ -37,12 +39,13 @@ while [ $# -gt 0 ]; do
     --steps) steps="$2"; shift 2 ;;
     --repeats) repeats="$2"; shift 2 ;;
     --quick) steps=20; repeats=1; shift ;;
-    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     *) echo "$0: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
 dmhs="${DMHS:-build/dmhs}"
 lmp="${LMP:-lmp}"
+read -r -a dmhs_opts <<< "${DMHS_OPTS:-}"
 t_sim=16
 dt_lmp=1e-7
 cd "$repo"
@@ -61,18 +64,18 @@ fi
 /usr/bin/python3 bench/lammps/vein_data.py "$tmp/init" --out "$tmp/vein" > "$tmp/data.log"
 atoms=$(awk '/ atoms$/ {print $1; exit}' "$tmp/vein.data")
 # dmhs's automatic dt at t = 0, from its output (a run too short for a step)
-"$dmhs" -options_file input/vein.opts -vein_dx "$dx" -t_end 1e-12 -quiet -output_snapshots false \
-  -checkpoint_at_end false -output_dir "$tmp/probe" > "$tmp/probe.log"
+"$dmhs" -options_file input/vein.opts -vein_dx "$dx" "${dmhs_opts[@]}" -t_end 1e-12 -quiet \
+  -output_snapshots false -checkpoint_at_end false -output_dir "$tmp/probe" > "$tmp/probe.log"
 dt0=$(grep -o '^dt = [0-9.e+-]* s chosen automatically' "$tmp/probe.log" | awk '{print $3}')
 [ -n "$dt0" ] || { echo "no automatic dt in dmhs's output" >&2; exit 1; }
 t_dmhs=$(awk -v n="$steps" -v dt="$dt0" 'BEGIN{printf "%.6g", n * dt}')
-echo "vein, dx = $dx m: $atoms particles; $steps steps a run, $repeats pair(s); dmhs at its automatic dt" \
+echo "vein, dx = $dx m: $atoms particles; $steps steps a run, $repeats pair(s); dmhs${DMHS_OPTS:+ with $DMHS_OPTS} at its automatic dt" \
      "($dt0 s at t = 0, to t = $t_dmhs s), LAMMPS at $dt_lmp s"
 
 for ((k = 1; k <= repeats; k++)); do
   rm -rf "$tmp/run"
   /usr/bin/time -f "%U %M" -o "$tmp/dmhs.time.$k" "$dmhs" -options_file input/vein.opts -vein_dx "$dx" \
-    -t_end "$t_dmhs" -quiet -output_snapshots false -checkpoint_at_end false \
+    "${dmhs_opts[@]}" -t_end "$t_dmhs" -quiet -output_snapshots false -checkpoint_at_end false \
     -output_dir "$tmp/run" > "$tmp/dmhs.log.$k"
   dl=$(grep -o 'step loop [0-9.e+-]* s' "$tmp/dmhs.log.$k" | awk '{print $3}')
   dn=$(grep -o '[0-9]* steps to t' "$tmp/dmhs.log.$k" | awk '{print $1}')
