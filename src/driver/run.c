@@ -31,6 +31,7 @@
 #include "dmhs/dump.h" /* mpi */
 #include "dmhs/substep.h"
 #include "dmhs/stop_signal.h"
+#include "dmhs/outdir.h"
 #include "dmhs/console_log.h"
 #include "dmhs/build_info.h"
 
@@ -141,6 +142,22 @@ static PetscErrorCode run_prepare_output_dir(sim *s, const char *dir) {
     unlink(probe);
   }
   PetscCallMPI(MPI_Barrier(s->comm));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0 clears what an earlier run left in dir (outdir.h): interrupted writes' .tmp files,
+ * and, unless this run continues from a checkpoint, that run's snapshots and index. */
+static PetscErrorCode run_clear_output_dir(const sim *s, const char *dir, PetscBool restarting) {
+  PetscFunctionBeginUser;
+  if (s->rank == 0) {
+    const int n_tmp = outdir_remove_tmp(dir);
+    const int n_snap = restarting ? 0 : outdir_remove_snapshots(dir, 0);
+    if (n_tmp || n_snap)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "output directory %s: removed %d unfinished .tmp file(s) and %d "
+                            "snapshot/index file(s) of an earlier run\n",
+                            dir, n_tmp, n_snap));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -265,6 +282,8 @@ PetscErrorCode run_create(MPI_Comm comm, dmhs_run **out, PetscBool *help_only) {
   PetscCall(run_prepare_output_dir(s, rc->output_dir));
   /* from here rank 0's console goes to <output_dir>/dmhs.log too, what it printed so far first */
   PetscCall(console_log_open(rc->output_dir, s->io->restart_file));
+  PetscCall(
+      run_clear_output_dir(s, rc->output_dir, s->io->restart_file[0] ? PETSC_TRUE : PETSC_FALSE));
   PetscCall(io_setup(s)); /* io: run.json, signal handlers */
   PetscCall(scn->build(scn, s));
   double reach = 0;

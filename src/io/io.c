@@ -34,7 +34,7 @@
 #include "dmhs/stop_signal.h"
 #include "dmhs/build_info.h"
 #include "h5check.h"
-#include "outdir.h"
+#include "dmhs/outdir.h"
 
 PetscErrorCode io_set_output_dir(sim *s, const char *dir) {
   PetscFunctionBeginUser;
@@ -307,16 +307,6 @@ PetscErrorCode io_setup(sim *s) {
   io->host[sizeof(io->host) - 1] = 0;
   if (s->rank == 0)
     io_previous_status(s->io->output_dir, io->previous_status, sizeof(io->previous_status));
-  if (s->rank == 0) {
-    /* outdir.h: interrupted writes' leftovers; a fresh run also an earlier run's snapshots */
-    const int n_tmp = outdir_remove_tmp(s->io->output_dir);
-    const int n_snap = io->restart_file[0] ? 0 : outdir_remove_snapshots(s->io->output_dir, 0);
-    if (n_tmp || n_snap)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "output directory %s: removed %d unfinished .tmp file(s) and %d "
-                            "snapshot/index file(s) of an earlier run\n",
-                            s->io->output_dir, n_tmp, n_snap));
-  }
   PetscCall(io_run_json(s, "running", PETSC_FALSE));
   io->run_json_started = PETSC_TRUE;
   if (s->rank == 0)

@@ -4,7 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "outdir.h"
+#include "dmhs/outdir.h"
 
 /* Regular file dir/name removed: 1, else 0. */
 static int outdir_unlink(const char *dir, const char *name) {

@@ -1,5 +1,6 @@
-/* What a run removes from its output directory before writing (private to
- * src/io; the policy is in doc/guide/output.md, "Output directory"):
+/* What a run removes from its output directory before writing (the driver before the run,
+ * io's restart after reading its checkpoint; the policy is in doc/guide/output.md, "Output
+ * directory"):
  *   - every run: stale <name>.tmp files, left by a write that was interrupted
  *     (killed, disk full): they are never complete;
  *   - a fresh run (no -restart): the snapshots snap_NNNNNN.h5 and
