@@ -64,15 +64,7 @@ static inline void harmonic_tally(const sim *s, const harmonic_bonds *set, int f
     const double r = sqrt(d[0] * d[0] + d[1] * d[1]), r0 = HARMONIC_R0(set, t, b, ty);
     if (force || virial) {
       const double fr = bond_harmonic_iact(K[ty], r0, r);
-      if (force) {
-        const double fi = fr / mass[i], fj = fr / mass[j];
-        a[i][0] += fi * d[0];
-        a[i][1] += fi * d[1];
-        a[j][0] -= fj * d[0];
-        a[j][1] -= fj * d[1];
-      }
-      if (virial)
-        virial_pair_add(W, i, j, fr, d);
+      bond_pair_apply(a, W, mass, i, j, fr, d, force, virial);
     }
     if (energy)
       local += t->bond_weight[b] * bond_harmonic_energy(K[ty], r0, r);

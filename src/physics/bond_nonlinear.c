@@ -119,15 +119,7 @@ static inline void nonlinear_tally(const module *self, const sim *s, int force, 
     }
     if (force || virial) {
       const double fr = bond_nonlinear_iact(K[ty], R0[ty], L[ty], r);
-      if (force) {
-        const double fi = fr / mass[i], fj = fr / mass[j];
-        a[i][0] += fi * dd[0];
-        a[i][1] += fi * dd[1];
-        a[j][0] -= fj * dd[0];
-        a[j][1] -= fj * dd[1];
-      }
-      if (virial)
-        virial_pair_add(W, i, j, fr, dd);
+      bond_pair_apply(a, W, mass, i, j, fr, dd, force, virial);
     }
     if (energy)
       local += t->bond_weight[b] * bond_nonlinear_energy(K[ty], R0[ty], L[ty], r);
