@@ -11,7 +11,12 @@ point's total stress and displacement. Prints, and writes to --csv
 (default <out>.csv), per completed cycle and spacing: the peak inlet
 velocity, the largest and smallest clear opening, the measurement point's
 time-averaged displacement and peak stress, and each one's difference from
-the next finer spacing that reached that cycle (relative, %).
+the next finer spacing that reached that cycle (relative, %). Where a run
+stops short of a whole cycle (the published dx runs a stretch only), prints
+and writes to --stretch-csv (default <out>-stretch.csv) the inlet velocity,
+the clear opening and the upper tip's position at every --every seconds up
+to the end of the shortest run, each run's value and its difference from
+the next finer spacing, and the peak inlet velocity over that stretch.
 Writes vein_convergence.png into the first RUNDIR unless --out is given.
 """
 import argparse
@@ -36,6 +41,10 @@ def main():
     ap.add_argument("rundirs", nargs="+")
     ap.add_argument("--out", default=None, help="PNG path or directory (default: the first RUNDIR)")
     ap.add_argument("--csv", default=None, help="table of per-cycle metrics (default: <PNG>.csv)")
+    ap.add_argument("--stretch-csv", default=None,
+                    help="table over the shortest run's stretch (default: <PNG>-stretch.csv)")
+    ap.add_argument("--every", type=float, default=0.1,
+                    help="sampling interval of the stretch table [s] (default 0.1)")
     a = ap.parse_args()
     runs = []
     for d in a.rundirs:
@@ -114,6 +123,67 @@ def main():
               f"{cell('disp_mean', 1e3, '.3f'):14s} {cell('stress_peak', 1, '.3g')}")
     print(path)
     print(table)
+    stretch = a.stretch_csv or os.path.splitext(path)[0] + "-stretch.csv"
+    if write_stretch(runs, a.every, stretch):
+        print(stretch)
+
+
+STRETCH = (("u", "inlet velocity [m/s]", 1, ".4f"), ("open", "clear opening [mm]", 1e3, ".3f"),
+           ("tip_x", "upper tip x [mm]", 1e3, ".3f"), ("tip_y", "upper tip y [mm]", 1e3, ".3f"))
+
+
+def stretch_series(cols, dx):
+    u, _ = vc.inlet_velocity(cols)
+    return {"u": u, "open": vc.clear_opening(cols, dx), "tip_x": cols["tip_upper_x"],
+            "tip_y": cols["tip_upper_y"]}
+
+
+def write_stretch(runs, every, path):
+    """The runs side by side over the shortest one's stretch, when that is less
+    than a whole cycle (the per-cycle table has nothing of it). runs: coarsest
+    first. Returns False (and writes nothing) when every run has a whole cycle."""
+    T = runs[0][3]["T"]
+    t_end = min(float(np.nanmax(r[2]["t"])) for r in runs)
+    if t_end >= T or len(runs) < 2:
+        return False
+    if not every > 0:
+        vc.fail(f"--every {every}: must be > 0")
+    times = np.arange(1, int(math.floor(t_end / every + 1e-9)) + 1) * every
+    if times.size == 0:
+        vc.fail(f"the shortest run ends at t = {t_end:g} s, before the first sample at {every:g} s")
+    series = [(dx, stretch_series(cols, dx), cols["t"]) for dx, _, cols, _ in runs]
+    keys = ["t"]
+    for dx, _, _ in series:
+        keys += [f"{k}_dx{dx:g}" for k, _, _, _ in STRETCH]
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(keys)
+        for tk in times:
+            row = [f"{tk:.6g}"]
+            for _, ser, t in series:
+                row += [f"{np.interp(tk, t, ser[k]):.6g}" for k, _, _, _ in STRETCH]
+            w.writerow(row)
+    print(f"over the stretch t <= {t_end:.3f} s (the shortest run), each run's value and its "
+          "difference from the next finer dx:")
+    print("t[s]   " + "  ".join(f"{lab:>28s}" for _, lab, _, _ in STRETCH))
+    for tk in times:
+        for j, (dx, ser, t) in enumerate(series):
+            cells = []
+            for k, _, scale, fmt in STRETCH:
+                v = float(np.interp(tk, t, ser[k]))
+                cell = format(v * scale, fmt)
+                if j + 1 < len(series):
+                    ref = float(np.interp(tk, series[j + 1][2], series[j + 1][1][k]))
+                    if ref != 0 and math.isfinite(ref):
+                        cell += f" ({(v / ref - 1) * 100:+.0f}%)"
+                cells.append(f"{cell:>28s}")
+            print(f"{tk:5.2f}  dx {dx * 1e3:g} mm  " + "  ".join(cells))
+    print("peak inlet velocity over the stretch:")
+    for dx, ser, t in series:
+        sel = t <= t_end
+        k = int(np.nanargmax(ser["u"][sel]))
+        print(f"  dx {dx * 1e3:g} mm: {ser['u'][sel][k]:.4f} m/s at t = {t[sel][k]:.3f} s")
+    return True
 
 
 if __name__ == "__main__":

@@ -159,3 +159,10 @@ add_test(NAME validation_vein_plots_check
                  ${DMHS_VEIN_PLOTS}/fields_p.png ${DMHS_VEIN_PLOTS}/fields_speed.gif)
 set_tests_properties(validation_vein_plots_check PROPERTIES LABELS validation TIMEOUT 30
                      FIXTURES_REQUIRED vein_plots)
+
+# the convergence plot's stretch table (a finer run stopped short of a cycle) on two made-up runs
+add_test(NAME validation_vein_convergence_stretch
+         COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/test/validation/vein_stretch_check.py
+                 ${DMHS_VEIN_POST}/plot_vein_convergence.py ${DMHS_VEIN_PLOTS}/stretch)
+set_tests_properties(validation_vein_convergence_stretch PROPERTIES LABELS validation TIMEOUT 60
+                     FIXTURES_REQUIRED vein_plots_clean)
