@@ -152,28 +152,27 @@ def write_stretch(runs, every, path):
     if times.size == 0:
         vc.fail(f"the shortest run ends at t = {t_end:g} s, before the first sample at {every:g} s")
     series = [(dx, stretch_series(cols, dx), cols["t"]) for dx, _, cols, _ in runs]
+    # each run's series at the sample times, once for the CSV and the printout
+    at = [{k: np.interp(times, t, ser[k]) for k, _, _, _ in STRETCH} for _, ser, t in series]
     keys = ["t"]
     for dx, _, _ in series:
         keys += [f"{k}_dx{dx:g}" for k, _, _, _ in STRETCH]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(keys)
-        for tk in times:
-            row = [f"{tk:.6g}"]
-            for _, ser, t in series:
-                row += [f"{np.interp(tk, t, ser[k]):.6g}" for k, _, _, _ in STRETCH]
-            w.writerow(row)
+        for n, tk in enumerate(times):
+            w.writerow([f"{tk:.6g}"] + [f"{v[k][n]:.6g}" for v in at for k, _, _, _ in STRETCH])
     print(f"over the stretch t <= {t_end:.3f} s (the shortest run), each run's value and its "
           "difference from the next finer dx:")
     print("t[s]   " + "  ".join(f"{lab:>28s}" for _, lab, _, _ in STRETCH))
-    for tk in times:
-        for j, (dx, ser, t) in enumerate(series):
+    for n, tk in enumerate(times):
+        for j, (dx, _, _) in enumerate(series):
             cells = []
             for k, _, scale, fmt in STRETCH:
-                v = float(np.interp(tk, t, ser[k]))
+                v = float(at[j][k][n])
                 cell = format(v * scale, fmt)
                 if j + 1 < len(series):
-                    ref = float(np.interp(tk, series[j + 1][2], series[j + 1][1][k]))
+                    ref = float(at[j + 1][k][n])
                     if ref != 0 and math.isfinite(ref):
                         cell += f" ({(v / ref - 1) * 100:+.0f}%)"
                 cells.append(f"{cell:>28s}")
