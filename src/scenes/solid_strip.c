@@ -12,21 +12,23 @@ PetscErrorCode solid_strip_build(sim *s, solid_strip *st, PetscInt64 *next_gid) 
              "a strip needs at least 2 free columns (got %" PetscInt_FMT " columns, %" PetscInt_FMT
              " clamped)",
              st->n, st->n_clamp);
+  PetscCheck(!st->hinged || st->n_clamp == 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "a hinged strip clamps exactly one column (got %" PetscInt_FMT ")", st->n_clamp);
   st->first_gid = *next_gid;
   for (PetscInt c = 0; c < st->n; c++)
     for (int l = 0; l < 2; l++) {
       const double x[2] = {st->origin[0] + st->spacing * (c * st->along[0] + l * st->across[0]),
                            st->origin[1] + st->spacing * (c * st->along[1] + l * st->across[1])};
+      const PetscBool fixed = c < st->n_clamp && !(st->hinged && l == 1) ? PETSC_TRUE : PETSC_FALSE;
       PetscInt i;
-      PetscCall(particles_add_owned(&s->ps, (*next_gid)++,
-                                    c < st->n_clamp ? PTYPE_WALL : PTYPE_SOLID, x, zero, st->mass,
-                                    st->rho, &i));
+      PetscCall(particles_add_owned(&s->ps, (*next_gid)++, fixed ? PTYPE_WALL : PTYPE_SOLID, x,
+                                    zero, st->mass, st->rho, &i));
       if (c == st->n - 1 && s->ps.load) /* with solid_load: the tip carries the load */
         s->ps.load[i] = SOLID_LOAD_MARK;
     }
 #define G(c, l) (st->first_gid + 2 * (c) + (l))
   for (PetscInt c = 0; c < st->n; c++) {
-    const PetscBool free_c = c >= st->n_clamp ? PETSC_TRUE : PETSC_FALSE;
+    const PetscBool free_c = c >= st->n_clamp || st->hinged ? PETSC_TRUE : PETSC_FALSE;
     if (free_c)
       PetscCall(topology_add_bond(t, G(c, 0), G(c, 1), 0));
     if (c + 1 == st->n || c + 1 < st->n_clamp)

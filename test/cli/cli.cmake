@@ -241,6 +241,8 @@ set_tests_properties(cli_vein_study_driver PROPERTIES LABELS cli TIMEOUT 300 PRO
 # one option per message, with its value
 dmhs_cli_fail(cli_vein_bad_ka "-vein_leaflet_ka must be >= 0 J \\(got -1"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_leaflet_ka -1 -output_dir ${DMHS_CLI_OUT}/vein-bad-ka)
+dmhs_cli_fail(cli_vein_bad_root "-vein_leaflet_root pinned: unknown value; -vein_leaflet_root takes one of clamped, hinged"
+  -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_leaflet_root pinned -output_dir ${DMHS_CLI_OUT}/vein-bad-root)
 dmhs_cli_fail(cli_vein_bad_wall_layers "-vein_wall_layers must be >= 1 \\(got 0\\)"
   -options_file ${DMHS_INPUT}/vein-quick.opts -quiet -vein_wall_layers 0 -output_dir ${DMHS_CLI_OUT}/vein-bad-layers)
 # one option per message, its value and its range, in the other scenes and modules too

@@ -53,9 +53,11 @@ static PetscInt count_pairs_between_solids(sim *s) {
   return n;
 }
 
-static void build_strip(sim *s, PetscInt n, double r0, double m, PetscInt n_clamp) {
+static void build_strip_root(sim *s, PetscInt n, double r0, double m, PetscInt n_clamp,
+                             PetscBool hinged) {
   solid_strip st = {.n = n,
                     .n_clamp = n_clamp,
+                    .hinged = hinged,
                     .origin = {4e-3, 5e-3},
                     .along = {1, 0},
                     .across = {0, 1},
@@ -64,6 +66,48 @@ static void build_strip(sim *s, PetscInt n, double r0, double m, PetscInt n_clam
                     .rho = 1000};
   PetscInt64 gid = 100;
   OK(solid_strip_build(s, &st, &gid));
+}
+
+static void build_strip(sim *s, PetscInt n, double r0, double m, PetscInt n_clamp) {
+  build_strip_root(s, n, r0, m, n_clamp, PETSC_FALSE);
+}
+
+/* A strip turned as a whole about column 0's layer-0 particle: a hinged root
+ * takes no moment (no force anywhere), a clamped one resists (its fixed
+ * layer-1 particle pulls back) */
+static void test_hinged_root(void **state) {
+  (void)state;
+  const double r0 = 1e-4, m = 2e-5, phi = 0.2, K = 1e6;
+  for (int hinged = 0; hinged < 2; hinged++) {
+    sim *s = fixture_create(1e-2, 1e-2, PETSC_FALSE);
+    OK(modules_enable(s, "bond_harmonic", NULL));
+    OK(modules_enable(s, "angle_harmonic", NULL));
+    OK(bond_set_default(s, K, r0, 0));
+    OK(angle_set_default(s, 0.01, 90.0));
+    build_strip_root(s, 5, r0, m, 1, hinged ? PETSC_TRUE : PETSC_FALSE);
+    PetscInt n_wall = 0;
+    for (PetscInt i = 0; i < s->ps.n_owned; i++) {
+      if (s->ps.type[i] == PTYPE_WALL) { /* the pivot, and the clamp's layer-1 particle */
+        n_wall++;
+        continue;
+      }
+      const double dx = s->ps.x[i][0] - 4e-3, dy = s->ps.x[i][1] - 5e-3;
+      s->ps.x[i][0] = 4e-3 + cos(phi) * dx - sin(phi) * dy;
+      s->ps.x[i][1] = 5e-3 + sin(phi) * dx + cos(phi) * dy;
+    }
+    assert_int_equal(n_wall, hinged ? 1 : 2);
+    fixture_setup(s);
+    double a_max = 0;
+    for (PetscInt i = 0; i < s->ps.n_owned; i++)
+      if (s->ps.type[i] == PTYPE_SOLID)
+        a_max = PetscMax(a_max, hypot(s->ps.a[i][0], s->ps.a[i][1]));
+    const double a_scale = 2 * K * r0 * phi / m; /* a bond stretched by r0 phi */
+    if (hinged)
+      assert_true(a_max < 1e-9 * a_scale);
+    else
+      assert_true(a_max > 0.1 * a_scale);
+    fixture_destroy(&s);
+  }
 }
 
 static void test_exclusions(void **state) {
@@ -211,6 +255,7 @@ int main(int argc, char **argv) {
       cmocka_unit_test(test_periodic_bond),         cmocka_unit_test(test_exclusions),
       cmocka_unit_test(test_conservation_harmonic), cmocka_unit_test(test_conservation_nonlinear),
       cmocka_unit_test(test_conservation_substeps), cmocka_unit_test(test_any_type_and_owners),
+      cmocka_unit_test(test_hinged_root),
   };
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(events_register());

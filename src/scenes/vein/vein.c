@@ -66,7 +66,8 @@ typedef struct {
   double fluid_mass_ref, solid_mass_ref;
   PetscInt wall_layers, crossing_interval;
   double probe_time;
-  PetscBool clots; /* -vein_clots: module agglomeration */
+  PetscBool clots;  /* -vein_clots: module agglomeration */
+  PetscBool hinged; /* -vein_leaflet_root hinged: the leaflets turn freely at the root */
   module *body, *rep, *agg;
   vein_layout lay;
 } vein_data;
@@ -134,6 +135,15 @@ static PetscErrorCode vein_set_from_options(scene *self, sim *s) {
   PetscCall(options_read_real("-vein_leaflet_angle",
                               "Leaflet root angle to the axis [deg] (0 = from -vein_leaflet_gap)",
                               NULL, v->leaflet_angle_deg, &v->leaflet_angle_deg, NULL));
+  {
+    const char *const roots[] = {"clamped", "hinged", "vein_leaflet_root", "VEIN_ROOT_", NULL};
+    PetscEnum root = v->hinged ? 1 : 0;
+    PetscCall(options_read_enum("-vein_leaflet_root",
+                                "Leaflet root: clamped (its direction held by the angles) or "
+                                "hinged (free to turn about its sinus-side particle)",
+                                NULL, roots, root, &root, NULL));
+    v->hinged = root == 1 ? PETSC_TRUE : PETSC_FALSE;
+  }
   PetscCall(options_read_real(
       "-vein_leaflet_ka",
       "Leaflet angle stiffness k_a at dx = 1e-4 m [J] (scaled by 1e-4/dx; -angle_k sets it "
@@ -311,6 +321,7 @@ static void vein_leaflet_strip(const vein_data *v, double x_root, double theta, 
   const double c = cos(theta), sn = sin(theta);
   st->n = 1 + (PetscInt)floor(v->leaflet_length / v->dx + 0.5);
   st->n_clamp = 1;
+  st->hinged = v->hinged;
   st->along[0] = c;
   st->along[1] = -sign * sn;
   /* layer 0 faces the sinus, layer 1 the axis */
@@ -436,7 +447,7 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
     v->lay.leaflet[k].n_columns = st[k].n;
     v->lay.leaflet[k].sinus_layer = 0;
   }
-  const PetscInt64 n_leaflet = 4 * n_free;
+  const PetscInt64 n_leaflet = 4 * n_free + (v->hinged ? 2 : 0);
   PetscCall(
       PetscPrintf(s->comm,
                   "vein: period %g m, sinus %g m long at x = [%g, %g] m (half-ellipses, D = %g m), "
@@ -445,9 +456,11 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
   PetscCall(PetscPrintf(s->comm,
                         "vein: particles fluid %" PetscInt64_FMT " (%" PetscInt64_FMT
                         " in the sinus), wall %" PetscInt64_FMT " (%" PetscInt_FMT
-                        " layers, 4 of them leaflet clamps), leaflet %" PetscInt64_FMT
-                        " (2 x 2 x %" PetscInt_FMT ")\n",
-                        n_fluid, n_sinus, n_wall + 4, v->wall_layers, n_leaflet, n_free));
+                        " layers, %d of them leaflet %s), leaflet %" PetscInt64_FMT
+                        " (2 x 2 x %" PetscInt_FMT "%s)\n",
+                        n_fluid, n_sinus, n_wall + (v->hinged ? 2 : 4), v->wall_layers,
+                        v->hinged ? 2 : 4, v->hinged ? "hinge pivots" : "clamps", n_leaflet, n_free,
+                        v->hinged ? " + 2 at the hinges" : ""));
   PetscCall(PetscPrintf(s->comm,
                         "vein: leaflets of %g m at %.3f deg to the axis, rooted at x = %g m; tips "
                         "%g m apart at rest\n",
