@@ -169,6 +169,11 @@ set_tests_properties(cli_colon_study_plot PROPERTIES LABELS cli TIMEOUT 60)
 add_test(NAME cli_sph_grid_selftest COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/sph_grid_selftest.py
   ${PROJECT_SOURCE_DIR}/scripts/post)
 set_tests_properties(cli_sph_grid_selftest PROPERTIES LABELS cli TIMEOUT 60)
+# scripts/post/particle_spacing.py: the paired-up liquid particles of a made-up snapshot, one pair
+# across the periodic boundary, a wall particle left out; bad --below values and no snapshot fail
+add_test(NAME cli_particle_spacing COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/particle_spacing_check.py
+  ${PROJECT_SOURCE_DIR}/scripts/post ${DMHS_CLI_OUT}/particle-spacing)
+set_tests_properties(cli_particle_spacing PROPERTIES LABELS cli TIMEOUT 60)
 # progress lines at the simulated and the wall-clock interval, the projection after 100 steps
 # (the step count of the automatic dt as taken), -quiet (test/cli/progress.sh)
 add_test(NAME cli_progress_lines COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/progress.sh ${DMHS_EXE} ${DMHS_INPUT}
