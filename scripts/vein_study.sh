@@ -114,7 +114,9 @@ if [ -z "${DMHS_EXE:-}" ]; then
   "$repo/scripts/setup.sh"
 fi
 [ -x "$exe" ] || die "no dmhs executable at '$exe'"
-mpirun_flags=(--oversubscribe)
+# --bind-to none: Open MPI binds each job's rank 0 to core 0, so two runs side by side (--jobs 2,
+# or two drivers) shared one core and left the other idle
+mpirun_flags=(--oversubscribe --bind-to none)
 [ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
 mkdir -p "$out"
 

@@ -21,6 +21,15 @@ for _ in $(seq 600); do
   [ -s "$W/study/run4/vein.csv" ] && [ -s "$W/study/run5/vein.csv" ] && break
   sleep 0.1
 done
+# two runs side by side may use every core this test may: neither is bound to one of them
+allowed=$(awk '/^Cpus_allowed_list/ {print $2}' /proc/self/status)
+for id in 4 5; do
+  pid=$(pgrep -f -- "-output_dir $W/study/run$id( |\$)" | while read -r p; do
+    [ "$(cat /proc/"$p"/comm 2>/dev/null)" != mpirun ] && echo "$p"; done | head -n 1)
+  [ -n "$pid" ] || continue # already done: nothing to check
+  got=$(awk '/^Cpus_allowed_list/ {print $2}' /proc/"$pid"/status 2>/dev/null || true)
+  [ -z "$got" ] || [ "$got" = "$allowed" ] || fail "run $id bound to cores $got, not $allowed"
+done
 kill -TERM "$driver"
 rc=0; wait "$driver" || rc=$?
 [ "$rc" -ne 0 ] || fail "an interrupted study exited with status 0"
