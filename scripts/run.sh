@@ -17,7 +17,9 @@ fi
 "$repo/scripts/setup.sh"
 build="${DMHS_BUILD_DIR:-$repo/build}"
 np="${DMHS_NP:-1}"
-mpirun_flags=(--oversubscribe)
+# --bind-to none: Open MPI binds each job's rank 0 to core 0, so two cases run side by side
+# would share one core
+mpirun_flags=(--oversubscribe --bind-to none)
 [ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
 mpirun "${mpirun_flags[@]}" -n "$np" "$build/dmhs" -options_file "$opts" "$@"
 # The output directory is the one the options chose; post-process what the scene wrote.
