@@ -70,7 +70,7 @@ def nearest_distances(x, reach, box_lo, box_hi, periodic):
             first = np.searchsorted(skey, nkey, "left")
             last = np.searchsorted(skey, nkey, "right")
             count = np.where(ok, last - first, 0)
-            for k in range(int(count.max()) if n else 0):
+            for k in range(int(count.max())):
                 has = count > k
                 i = np.nonzero(has)[0]
                 j = order[first[i] + k]

@@ -447,7 +447,8 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
     v->lay.leaflet[k].n_columns = st[k].n;
     v->lay.leaflet[k].sinus_layer = 0;
   }
-  const PetscInt64 n_leaflet = 4 * n_free + (v->hinged ? 2 : 0);
+  const int n_fixed = v->hinged ? 2 : 4; /* a hinge fixes one particle of the root column */
+  const PetscInt64 n_leaflet = 4 * n_free + 4 - n_fixed;
   PetscCall(
       PetscPrintf(s->comm,
                   "vein: period %g m, sinus %g m long at x = [%g, %g] m (half-ellipses, D = %g m), "
@@ -458,8 +459,8 @@ static PetscErrorCode vein_build(scene *self, sim *s) {
                         " in the sinus), wall %" PetscInt64_FMT " (%" PetscInt_FMT
                         " layers, %d of them leaflet %s), leaflet %" PetscInt64_FMT
                         " (2 x 2 x %" PetscInt_FMT "%s)\n",
-                        n_fluid, n_sinus, n_wall + (v->hinged ? 2 : 4), v->wall_layers,
-                        v->hinged ? 2 : 4, v->hinged ? "hinge pivots" : "clamps", n_leaflet, n_free,
+                        n_fluid, n_sinus, n_wall + n_fixed, v->wall_layers, n_fixed,
+                        v->hinged ? "hinge pivots" : "clamps", n_leaflet, n_free,
                         v->hinged ? " + 2 at the hinges" : ""));
   PetscCall(PetscPrintf(s->comm,
                         "vein: leaflets of %g m at %.3f deg to the axis, rooted at x = %g m; tips "
