@@ -71,6 +71,10 @@ PetscErrorCode bond_check_type_coeffs(const char *option, double v[], PetscInt n
 PetscErrorCode bond_check_resolved(const struct sim *s, const char *who);
 /* Smallest mass among owned solid particles, over all ranks (+inf when none). */
 PetscErrorCode bond_min_solid_mass(struct sim *s, double *m);
+/* A bond's Jacobian blocks (solid_modes.h) for rows i, j, d = x_i - x_j, r = |d|: the
+ * block -dF_i/dx_i has U'' along d and U'/r = -fr across it; -dF_i/dx_j is its negative. */
+PetscErrorCode bond_jacobian_add(struct solid_jacobian *J, PetscInt i, PetscInt j,
+                                 const double d[2], double r, double upp, double fr);
 
 /* For scenes with solids: reads -bond_style (default: the scene's style) and
  * -special_bonds_include, and enables the bond module of that style and angle_harmonic

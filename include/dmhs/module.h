@@ -8,6 +8,7 @@
 struct sim;
 struct dt_limits;
 struct checkpoint_io;
+struct solid_jacobian;
 
 /* MODULE_NEEDS_PAIRS: neighbours within the module's reach (sets the cutoff of the cells);
  * MODULE_CELLS_ONLY, set by the module's setup: it walks the cells itself and reads no pair
@@ -42,6 +43,11 @@ struct module {
    * that must move on this step's sub-steps with the solids, from the state at
    * the start of the step. Called before the step's first kick. */
   PetscErrorCode (*substep_members)(module *self, struct sim *s, PetscInt *mark);
+  /* Optional, for a solid_internal module: adds the 2x2 blocks -dF_p/dx_q of its forces'
+   * Jacobian at the current positions, for every pair of rows (p, q) of each interaction
+   * (p = q too), with solid_jacobian_add. With sub-steps they bound the solids' fastest
+   * mode, which dt itself must resolve (solid_modes.h). */
+  PetscErrorCode (*jacobian_blocks)(module *self, struct sim *s, struct solid_jacobian *J);
   double reach; /* longest interaction distance [m]; sets the ghost width */
   /* NULL-terminated names of the ghost fields its sweeps read on ghost rows (beyond the
    * FIELD_FIXED ones, which ghosts keep from their build): between builds a step refreshes

@@ -15,7 +15,9 @@
  * Solid sub-cycling (-solid_substeps N, src/core/substep.c): the limits of
  * the solid_internal modules (bonds, angles) bound dt/N, the others dt; N = 0
  * picks N every step as the smallest that keeps dt/N within -dt_safety (0.8
- * by default) x the solids' limit. dt.csv gains a column substeps.
+ * by default) x the solids' limit. dt.csv gains a column substeps. dt itself
+ * stays below a third of the solids' fastest period (solid_modes.h), where an
+ * impulse multiple-time-step scheme resonates.
  * t advances as t_anchor + (step - step_anchor) dt with the anchor moved at
  * each change: a fixed-dt run keeps t = step dt exactly, and the anchor is
  * checkpointed, so a restart continues the same t bit for bit. */

@@ -7,6 +7,7 @@
 #include "dmhs/io.h"
 #include "dmhs/timestep.h"
 #include "dmhs/substep.h"
+#include "dmhs/solid_modes.h"
 #include "dmhs/csv.h"
 #include "dmhs/events.h"
 #include "dmhs/fields.h"
@@ -89,6 +90,10 @@ PetscErrorCode timestep_collect_limits(sim *s, dt_limits *l) {
     for (int k = first; k < l->n; k++)
       l->item[k].inner = s->modules[m]->solid_internal;
   }
+  const int first = l->n;
+  PetscCall(solid_modes_add_limit(s, l));
+  for (int k = first; k < l->n; k++)
+    l->item[k].inner = PETSC_FALSE; /* it bounds dt itself */
   PetscFunctionReturn(0);
 }
 

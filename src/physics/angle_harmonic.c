@@ -11,6 +11,7 @@
 #include "dmhs/bond.h"
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/events.h"
+#include "dmhs/solid_modes.h"
 #include "angle_iact.h"
 
 typedef struct {
@@ -202,6 +203,36 @@ static PetscErrorCode angle_max_dt(module *self, sim *s, dt_limits *l) {
   PetscFunctionReturn(0);
 }
 
+/* Jacobian blocks (module.h): U'' grad(theta) grad(theta)^T = 2 k_a g_p g_q^T, with
+ * g_i = (a_y, -a_x)/|a|^2, g_k = (-b_y, b_x)/|b|^2, g_j = -(g_i + g_k) (up to one sign,
+ * which the products lose). The curvature term U' grad^2(theta) is left out: it
+ * vanishes at rest, and the angles stay near it. */
+static PetscErrorCode angle_jacobian(module *self, sim *s, solid_jacobian *J) {
+  const angle_data *d = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < t->n_angle_local; q++) {
+    const PetscInt r[3] = {t->angle[q][0], t->angle[q][1], t->angle[q][2]};
+    const double ka = d->k[t->angle_ltype[q]];
+    const double a[2] = {ps->x[r[0]][0] - ps->x[r[1]][0], ps->x[r[0]][1] - ps->x[r[1]][1]};
+    const double b[2] = {ps->x[r[2]][0] - ps->x[r[1]][0], ps->x[r[2]][1] - ps->x[r[1]][1]};
+    const double a2 = a[0] * a[0] + a[1] * a[1], b2 = b[0] * b[0] + b[1] * b[1];
+    if (!(ka > 0) || !(a2 > 0) || !(b2 > 0))
+      continue;
+    double g[3][2] = {{a[1] / a2, -a[0] / a2}, {0, 0}, {-b[1] / b2, b[0] / b2}};
+    g[1][0] = -(g[0][0] + g[2][0]);
+    g[1][1] = -(g[0][1] + g[2][1]);
+    for (int u = 0; u < 3; u++)
+      for (int v = 0; v < 3; v++) {
+        const double B[2][2] = {{2.0 * ka * g[u][0] * g[v][0], 2.0 * ka * g[u][0] * g[v][1]},
+                                {2.0 * ka * g[u][1] * g[v][0], 2.0 * ka * g[u][1] * g[v][1]}};
+        PetscCall(solid_jacobian_add(J, r[u], r[v], B));
+      }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode angle_view(module *self, sim *s, PetscViewer v) {
   const angle_data *d = self->data;
   PetscFunctionBeginUser;
@@ -233,6 +264,7 @@ PetscErrorCode angle_harmonic_module_create(module **m) {
   (*m)->setup = angle_setup;
   (*m)->compute = angle_compute;
   (*m)->max_dt = angle_max_dt;
+  (*m)->jacobian_blocks = angle_jacobian;
   (*m)->view = angle_view;
   (*m)->destroy = angle_destroy;
   (*m)->energy = angle_energy_sum;

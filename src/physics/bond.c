@@ -5,6 +5,7 @@
 #include "dmhs/sim.h"
 #include "dmhs/modules.h"
 #include "dmhs/bond.h"
+#include "dmhs/solid_modes.h"
 
 const char *const bond_style_names[] = {"harmonic", "nonlinear", "bond_style", "BOND_", NULL};
 
@@ -134,5 +135,22 @@ PetscErrorCode solid_modules_enable(sim *s, bond_style style) {
   PetscCall(modules_enable(s, style == BOND_HARMONIC ? "bond_harmonic" : "bond_nonlinear", NULL));
   PetscCall(modules_enable(s, "angle_harmonic", NULL));
   s->topo->special_include = include;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode bond_jacobian_add(solid_jacobian *J, PetscInt i, PetscInt j, const double d[2],
+                                 double r, double upp, double fr) {
+  const double u[2] = {d[0] / r, d[1] / r}, across = -fr;
+  double A[2][2], minus[2][2];
+  PetscFunctionBeginUser;
+  for (int a = 0; a < 2; a++)
+    for (int b = 0; b < 2; b++) {
+      A[a][b] = (upp - across) * u[a] * u[b] + (a == b ? across : 0.0);
+      minus[a][b] = -A[a][b];
+    }
+  PetscCall(solid_jacobian_add(J, i, i, A));
+  PetscCall(solid_jacobian_add(J, j, j, A));
+  PetscCall(solid_jacobian_add(J, i, j, minus));
+  PetscCall(solid_jacobian_add(J, j, i, minus));
   PetscFunctionReturn(0);
 }

@@ -9,6 +9,7 @@
 #include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/events.h"
+#include "dmhs/solid_modes.h"
 #include "bond_iact.h"
 #include "virial_iact.h"
 
@@ -135,6 +136,24 @@ static PetscErrorCode bond_harmonic_max_dt(module *self, sim *s, dt_limits *l) {
   PetscFunctionReturn(0);
 }
 
+/* Jacobian blocks (module.h): U'' = 2K along the bond, U'/r across. */
+static PetscErrorCode bond_harmonic_jacobian(module *self, sim *s, solid_jacobian *J) {
+  const bond_params *p = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (t->bond_owner[ty] != self)
+      continue;
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
+    PetscCall(bond_jacobian_add(J, i, j, d, r, 2.0 * p->k[ty],
+                                bond_harmonic_iact(p->k[ty], p->r0[ty], r)));
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
   const bond_params *p = self->data;
   PetscFunctionBeginUser;
@@ -160,6 +179,7 @@ PetscErrorCode bond_harmonic_module_create(module **m) {
   (*m)->setup = bond_harmonic_setup;
   (*m)->compute = bond_harmonic_compute;
   (*m)->max_dt = bond_harmonic_max_dt;
+  (*m)->jacobian_blocks = bond_harmonic_jacobian;
   (*m)->view = bond_harmonic_view;
   (*m)->destroy = bond_destroy;
   (*m)->energy = bond_harmonic_energy_sum;

@@ -15,6 +15,7 @@
 #include "dmhs/dt_limits.h"
 #include "dmhs/bond.h"
 #include "dmhs/events.h"
+#include "dmhs/solid_modes.h"
 #include "bond_iact.h"
 #include "virial_iact.h"
 
@@ -205,6 +206,26 @@ static PetscErrorCode bond_nonlinear_max_dt(module *self, sim *s, dt_limits *l) 
   PetscFunctionReturn(0);
 }
 
+/* Jacobian blocks (module.h): U'' along the bond and U'/r across, at its stretch. */
+static PetscErrorCode bond_nonlinear_jacobian(module *self, sim *s, solid_jacobian *J) {
+  const bond_params *p = self->data;
+  const topology *t = s->topo;
+  const particles *ps = &s->ps;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < t->n_bond_local; b++) {
+    const PetscInt i = t->bond[b][0], j = t->bond[b][1], ty = t->bond_ltype[b];
+    if (t->bond_owner[ty] != self)
+      continue;
+    const double d[2] = {ps->x[i][0] - ps->x[j][0], ps->x[i][1] - ps->x[j][1]};
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1]), x = r - p->r0[ty];
+    if (!(fabs(x) < p->rmax[ty])) /* broken: the force sweep stops the run */
+      continue;
+    PetscCall(bond_jacobian_add(J, i, j, d, r, bond_nonlinear_stiffness(p->k[ty], p->rmax[ty], x),
+                                bond_nonlinear_iact(p->k[ty], p->r0[ty], p->rmax[ty], r)));
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode bond_nonlinear_view(module *self, sim *s, PetscViewer v) {
   const bond_params *p = self->data;
   PetscFunctionBeginUser;
@@ -232,6 +253,7 @@ PetscErrorCode bond_nonlinear_module_create(module **m) {
   (*m)->setup = bond_nonlinear_setup;
   (*m)->compute = bond_nonlinear_compute;
   (*m)->max_dt = bond_nonlinear_max_dt;
+  (*m)->jacobian_blocks = bond_nonlinear_jacobian;
   (*m)->view = bond_nonlinear_view;
   (*m)->destroy = bond_destroy;
   (*m)->energy = bond_nonlinear_energy_sum;
