@@ -15,8 +15,11 @@
  * Jacobian of the sub-cycled forces over the moving rows: each module adds the
  * 2x2 blocks of its interactions (module.h jacobian_blocks), summed per pair of
  * particles here, and the bound is the largest sum over a row of the blocks'
- * norms, divided by the row's mass. The step's limit is a third of the period
- * of that bound, dt <= (2 pi/3)/omega_bound. */
+ * norms, divided by the row's mass (1.17-1.18x the true omega for the vein's
+ * leaflets). The step's limit is dt <= 1.25/omega_bound, so that the automatic
+ * dt (0.8 of it) sits at omega_bound dt = 1: the theory's 2 pi/3 is not enough
+ * on the vein, whose leaflets start to ring at a true omega dt of 1.0-1.1 once
+ * the valve closes (doc/stability.md, "Multi-rate contact"). */
 #ifndef DMHS_SOLID_MODES_H
 #define DMHS_SOLID_MODES_H
 #include <petscsys.h>
@@ -36,7 +39,9 @@ PetscErrorCode solid_jacobian_add(solid_jacobian *J, PetscInt p, PetscInt q, con
  * over all ranks (0 when no module gives blocks). Collective. */
 PetscErrorCode solid_modes_omega_bound(struct sim *s, double *omega);
 
-/* With sub-steps on: appends the limit "solid fastest mode", (2 pi/3)/omega,
+#define SOLID_MODES_LIMIT 1.25
+
+/* With sub-steps on: appends the limit "solid fastest mode", 1.25/omega,
  * which bounds dt itself (not the sub-step). Collective. */
 PetscErrorCode solid_modes_add_limit(struct sim *s, struct dt_limits *l);
 

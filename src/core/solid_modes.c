@@ -107,7 +107,7 @@ PetscErrorCode solid_modes_add_limit(sim *s, dt_limits *l) {
   PetscCall(solid_modes_omega_bound(s, &omega));
   if (omega > 0)
     PetscCall(dt_limits_add(l, "solid fastest mode",
-                            "(2 pi/3)/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx",
-                            2.0 * M_PI / 3.0 / omega));
+                            "1.25/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx",
+                            SOLID_MODES_LIMIT / omega));
   PetscFunctionReturn(0);
 }

@@ -3,7 +3,7 @@
  * leaflet at its study spacing an upper bound within 1.3x of the fastest mode
  * found by power iteration on the modules' own forces, which lies several
  * times above the per-spring estimate the sub-step limits use; and the step's
- * limit (2 pi/3)/omega is added, bounding dt itself, only with sub-steps. */
+ * limit 1.25/omega is added, bounding dt itself, only with sub-steps. */
 #include "solid_fixture.h"
 #include "dmhs/dt_limits.h"
 #include "dmhs/timestep.h"
@@ -146,7 +146,7 @@ static void test_limit_with_substeps(void **state) {
       OK(solid_modes_omega_bound(s, &omega));
       assert_non_null(mode);
       assert_false(mode->inner); /* it bounds dt, not the sub-step */
-      const double want = 2 * M_PI / 3 / omega;
+      const double want = SOLID_MODES_LIMIT / omega;
       assert_true(mode->value <= want && mode->value > want * (1 - 1e-6));
       assert_true(find_limit(&l, "angle harmonic")->inner);
     }

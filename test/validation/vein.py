@@ -110,11 +110,34 @@ def mode_run(args):
     if summary["n_cycles"] != want:
         fail(f"vein-summary.csv counts {summary['n_cycles']:g} cycles of peak stress, not the {want} whole "
              f"cycles after the point was chosen at t = {t_probe:.7g} s (T = {T:g} s, run to {t[-1]:.7g} s)")
+    if args.max_leaflet_speed:
+        leaflet_speed(args)
     if args.compare:
         compare_files(args.outdir, args.compare, CSVS)
     if args.near:
         near(args, names, rows)
     print("PASS")
+
+
+def leaflet_speed(args):
+    """The leaflets' fastest particle in every snapshot below --max-leaflet-speed (a leaflet
+    that rings moves its particles at m/s while the valve as a whole moves at mm/s)."""
+    import glob
+    import h5py
+    import numpy as np
+    snaps = sorted(glob.glob(os.path.join(args.outdir, "snap_*.h5")))
+    if len(snaps) < 2:
+        fail(f"--max-leaflet-speed: no snapshots in {args.outdir}")
+    worst, at = 0.0, None
+    for f in snaps:
+        with h5py.File(f, "r") as h:
+            typ, v = h["/particles/type"][()], h["/particles/v"][()]
+            speed = np.hypot(v[:, 0], v[:, 1])[typ == 2]
+            if speed.size and speed.max() > worst:
+                worst, at = float(speed.max()), os.path.basename(f)
+    print(f"  leaflets' fastest particle over {len(snaps)} snapshots: {worst:.3g} m/s ({at})")
+    if worst > args.max_leaflet_speed:
+        fail(f"a leaflet particle moved at {worst:.3g} m/s > {args.max_leaflet_speed} m/s in {at}: the leaflets ring")
 
 
 def near(args, names, rows):
@@ -172,6 +195,8 @@ def main():
     p.add_argument("--close", type=float, default=0.9)
     p.add_argument("--max-rho-dev", type=float, default=0.03)
     p.add_argument("--max-mach", type=float, default=0.1)
+    p.add_argument("--max-leaflet-speed", type=float, default=0.0,
+                   help="the leaflets' fastest particle in every snapshot below this [m/s] (0: not checked)")
     p.add_argument("--near", help="a run of the same case to agree with (another time stepping)")
     p.add_argument("--near-tol", type=float, default=0.02)
     p.add_argument("--near-t-max", type=float, default=0.25)
