@@ -16,8 +16,8 @@
  * the solid_internal modules (bonds, angles) bound dt/N, the others dt; N = 0
  * picks N every step as the smallest that keeps dt/N within -dt_safety (0.8
  * by default) x the solids' limit. dt.csv gains a column substeps. dt itself
- * stays below a third of the solids' fastest period (solid_modes.h), where an
- * impulse multiple-time-step scheme resonates.
+ * stays below 1.25/omega, omega a bound on the solids' fastest mode
+ * (solid_modes.h): near it the liquid's once-a-step forces make them resonate.
  * t advances as t_anchor + (step - step_anchor) dt with the anchor moved at
  * each change: a fixed-dt run keeps t = step dt exactly, and the anchor is
  * checkpointed, so a restart continues the same t bit for bit. */

@@ -105,9 +105,12 @@ PetscErrorCode solid_modes_add_limit(sim *s, dt_limits *l) {
   if (!s->substeps.on)
     PetscFunctionReturn(0);
   PetscCall(solid_modes_omega_bound(s, &omega));
-  if (omega > 0)
-    PetscCall(dt_limits_add(l, "solid fastest mode",
-                            "1.25/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx",
-                            SOLID_MODES_LIMIT / omega));
+  if (omega > 0) {
+    char formula[96];
+    PetscCall(PetscSNPrintf(formula, sizeof(formula),
+                            "%g/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx",
+                            SOLID_MODES_LIMIT));
+    PetscCall(dt_limits_add(l, "solid fastest mode", formula, SOLID_MODES_LIMIT / omega));
+  }
   PetscFunctionReturn(0);
 }
