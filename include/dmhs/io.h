@@ -41,6 +41,7 @@ typedef struct io_state {
   char restart_file[PETSC_MAX_PATH_LEN]; /* -restart, "" = fresh start */
   PetscBool restart_allow_change;        /* -restart_allow_change: physics options may differ */
   char *restart_changes;                 /* what differed from the checkpoint's options, or NULL */
+  char *restart_new_options; /* options the checkpoint's dmhs lacked, at their defaults, or NULL */
   /* state */
   PetscBool restarted;           /* the state was read from restart_file */
   double dt_options;             /* the options' dt, which a restart replaces by its own */

@@ -51,9 +51,12 @@ PetscErrorCode options_run_control(const char *name);
  * are not marked run control: what a checkpoint stores. PetscFree it. */
 PetscErrorCode options_physics(char **text);
 /* The differences between a stored options_physics text and the current one,
- * "-name X in the checkpoint, Y now; ..." in report, and how many. */
-PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
-                                       int *n_changed);
+ * "-name X in the checkpoint, Y now; ..." in report, and how many. An option this run
+ * reads at its default (not given) that the stored text lacks is not a difference: the
+ * checkpoint's dmhs had no such option. Those go to added ("-name value; ..."), counted
+ * in n_added. */
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len, int *n_changed,
+                                       char *added, size_t added_len, int *n_added);
 /* For an option nobody read (name with its leading '-'): the recorded option names closest
  * to it (up to three as close as the closest) by edit distance, or else that it starts or
  * that start it, as "-a, -b or -c" in out; "" when none is close. */

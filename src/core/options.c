@@ -21,6 +21,7 @@ typedef struct {
   char *section, *text, *shown; /* -help: PetscOptionsBegin title, description, value shown */
   const char *note;             /* -help: why the option does not apply, or NULL */
   size_t order;                 /* first reading */
+  PetscBool given;              /* in the options database (else its reader's default) */
 } options_entry;
 
 static options_entry *options_seen;
@@ -38,11 +39,15 @@ static char *options_dup(const char *v) {
 /* Plain malloc: the table may outlive PETSc's allocator (it is cleared by options_forget). */
 static PetscErrorCode options_record(PetscOptionItems *po, const char opt[], const char text[],
                                      const char value[], const char shown[]) {
+  PetscBool given = PETSC_FALSE;
   PetscFunctionBeginUser;
+  if (po)
+    PetscCall(PetscOptionsHasName(po->options, po->prefix, opt, &given));
   for (size_t k = 0; k < options_n_seen; k++)
     if (!strcmp(options_seen[k].name, opt)) {
       if (options_frozen)
         PetscFunctionReturn(0);
+      options_seen[k].given = options_seen[k].given || given;
       char *v = options_dup(value), *w = options_dup(shown);
       PetscCheck(v && w, PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory recording option %s", opt);
       free(options_seen[k].value);
@@ -66,6 +71,7 @@ static PetscErrorCode options_record(PetscOptionItems *po, const char opt[], con
   e->text = options_dup(text);
   e->note = options_note;
   e->order = options_next_order++;
+  e->given = given;
   PetscCheck(e->name && e->value && e->shown && e->section && e->text, PETSC_COMM_SELF,
              PETSC_ERR_MEM, "out of memory recording option %s", opt);
   options_n_seen++;
@@ -311,13 +317,22 @@ static void options_append(char *report, size_t len, int *n, const char *name, c
   (*n)++;
 }
 
-PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len,
-                                       int *n_changed) {
+/* Was the recorded option name in the options database? */
+static PetscBool options_given(const char *name) {
+  for (size_t k = 0; k < options_n_seen; k++)
+    if (!strcmp(options_seen[k].name, name))
+      return options_seen[k].given;
+  return PETSC_FALSE;
+}
+
+PetscErrorCode options_compare_physics(const char *stored, char *report, size_t len, int *n_changed,
+                                       char *added, size_t added_len, int *n_added) {
   char *now;
   PetscFunctionBeginUser;
   PetscCall(options_physics(&now));
   report[0] = 0;
-  *n_changed = 0;
+  added[0] = 0;
+  *n_changed = *n_added = 0;
   for (int pass = 0; pass < 2; pass++) {
     const char *a = pass ? stored : now, *b = pass ? now : stored;
     for (const char *line = a; *line;) {
@@ -335,7 +350,13 @@ PetscErrorCode options_compare_physics(const char *stored, char *report, size_t 
         if (!other && !options_is_run_control(name)) { /* only on one side */
           if (pass)
             options_append(report, len, n_changed, name, value, vlen, NULL, 9);
-          else
+          else if (!options_given(name)) { /* a reader the writer's dmhs did not have */
+            const size_t at = strlen(added);
+            if (at + 1 < added_len)
+              snprintf(added + at, added_len - at, "%s%s %.*s", *n_added ? "; " : "", name,
+                       (int)vlen, value);
+            (*n_added)++;
+          } else
             options_append(report, len, n_changed, name, NULL, 9, value, vlen);
         } else if (other && !pass && (blen != vlen || strncmp(value, other, vlen)))
           options_append(report, len, n_changed, name, other, blen, value, vlen);

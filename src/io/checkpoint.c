@@ -254,16 +254,25 @@ PetscErrorCode checkpoint_write(sim *s, const char *path) {
 
 /* The physics options of the run that wrote the checkpoint against this run's:
  * a difference is an error naming the options, unless -restart_allow_change
- * (then it is printed and kept for run.json). */
+ * (then it is printed and kept for run.json). Options the writer's dmhs did not
+ * have, left at their defaults now, continue with a note (kept for run.json too). */
 static PetscErrorCode checkpoint_compare_options(sim *s, const char *path, hid_t fid) {
   const size_t len = 65536;
-  char *stored, report[2048];
-  int n_changed;
+  char *stored, report[2048], added[2048];
+  int n_changed, n_added;
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(len, &stored));
   PetscCall(h5io_get_string(path, fid, "physics_options", stored, len));
-  PetscCall(options_compare_physics(stored, report, sizeof(report), &n_changed));
+  PetscCall(options_compare_physics(stored, report, sizeof(report), &n_changed, added,
+                                    sizeof(added), &n_added));
   PetscCall(PetscFree(stored));
+  if (n_added) {
+    PetscCall(PetscPrintf(s->comm,
+                          "note: -restart %s: %d option(s) unknown to the dmhs that wrote it, "
+                          "continued at this run's default(s): %s\n",
+                          path, n_added, added));
+    PetscCall(PetscStrallocpy(added, &s->io->restart_new_options));
+  }
   if (!n_changed)
     PetscFunctionReturn(0);
   PetscCheck(

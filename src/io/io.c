@@ -201,6 +201,11 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
       io_json_string(f, s->io->restart_changes);
     else
       fprintf(f, "null");
+    fprintf(f, ",\n  \"restart_new_options\": ");
+    if (s->io->restart_new_options)
+      io_json_string(f, s->io->restart_new_options);
+    else
+      fprintf(f, "null");
   }
   fprintf(f, ",\n  \"previous_status\": ");
   if (s->io->previous_status[0])
@@ -327,7 +332,7 @@ PetscErrorCode io_restart_read(sim *s) {
         "-t_end %g s is not after the time of the checkpoint %s (t = %.9g s, step %" PetscInt_FMT
         "): nothing to run; give a later -t_end",
         s->t_end, io->restart_file, s->t, s->step);
-    if (io->restart_changes && s->rank == 0) {
+    if ((io->restart_changes || io->restart_new_options) && s->rank == 0) {
       /* run.json ("running") records what changed from the start */
       const int err = io_write_run_json(s, "running", NULL, 0);
       PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s/run.json: %s",
@@ -490,6 +495,7 @@ PetscErrorCode io_destroy(sim *s) {
     PetscFunctionReturn(0);
   PetscCall(PetscFree(s->io->options));
   PetscCall(PetscFree(s->io->restart_changes));
+  PetscCall(PetscFree(s->io->restart_new_options));
   PetscCall(xdmf_destroy(&s->io->xdmf));
   PetscFunctionReturn(0);
 }

@@ -3,7 +3,9 @@
 # kernel or body force is refused naming the option and both values, unless
 # -restart_allow_change (then run.json lists the change); run-control options
 # (-t_end, -output_*, -checkpoint_*, -progress_interval, -quiet) may change; a
-# -t_end at or before the checkpoint's time is refused.
+# -t_end at or before the checkpoint's time is refused. An option the
+# checkpoint's dmhs did not have (here one struck from its record) continues at
+# its default with a note (run.json: restart_new_options); given, it is a change.
 # Usage: restart_options.sh DMHS PYTHON WORKDIR
 set -uo pipefail
 EXE=$1 PY=$2 W=$3
@@ -45,4 +47,33 @@ grep -q '"restart_allow_change": true' "$W/allowed/run.json" || die "run.json la
 grep -q '"restart_changes": "-sph_kernel lucy in the checkpoint, cubic now"' "$W/allowed/run.json" ||
   die "run.json lacks the change"
 grep -q '"status": "completed"' "$W/allowed/run.json" || die "allowed/run.json status"
+# a checkpoint written by a dmhs without -sph_kernel: its record struck of that line
+OLDER=$W/older.h5
+cp "$GOOD" "$OLDER"
+"$PY" - "$OLDER" <<'PYEOF' || die "cannot edit $OLDER"
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1], "r+") as f:
+    lines = f.attrs["physics_options"].decode().split("\n")
+    kept = [l for l in lines if not l.startswith("-sph_kernel ")]
+    assert len(kept) == len(lines) - 1, "no -sph_kernel line in physics_options"
+    del f.attrs["physics_options"]
+    f.attrs.create("physics_options", np.bytes_("\n".join(kept)))
+PYEOF
+"$EXE" "${QUICK[@]}" -t_end 0.005 -restart "$OLDER" -output_dir "$W/older" > "$W/older.log" 2>&1 ||
+  { tail -3 "$W/older.log"; die "an option unknown to the checkpoint's dmhs, at its default, was refused"; }
+grep -qF "note: -restart $OLDER: 1 option(s) unknown to the dmhs that wrote it, continued at this run's default(s): -sph_kernel lucy" \
+  "$W/older.log" || die "no note about the option the checkpoint lacks"
+grep -q '"restart_new_options": "-sph_kernel lucy"' "$W/older/run.json" || die "run.json lacks restart_new_options"
+grep -q '"restart_changes": null' "$W/older/run.json" || die "older/run.json should list no change"
+# the same rows as a restart from the unedited checkpoint
+"$EXE" "${QUICK[@]}" -t_end 0.005 -restart "$GOOD" -output_dir "$W/same" > "$W/same.log" 2>&1 ||
+  die "the restart from $GOOD failed"
+cmp -s <(cut -d, -f1,2,4- "$W/older/error.csv") <(cut -d, -f1,2,4- "$W/same/error.csv") ||
+  die "older/error.csv differs from same/error.csv (wall time aside)"
+rc=0
+"$EXE" "${QUICK[@]}" -t_end 0.005 -restart "$OLDER" -output_dir "$W/older_given" -sph_kernel lucy \
+  > "$W/older_given.out" 2> "$W/older_given.err" || rc=$?
+[ $rc -eq 1 ] || die "older_given: exit status $rc, expected 1 (an option given that the checkpoint lacks)"
+grep -qF -- "-sph_kernel (not set) in the checkpoint, lucy now" "$W/older_given.err" ||
+  { cat "$W/older_given.err"; die "older_given: message lacks the option"; }
 echo "restart option checks: OK"
