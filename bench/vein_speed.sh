@@ -6,9 +6,12 @@
 # alternated within every round (the VM is shared: side by side keeps the ratio fair).
 # One line per run (setting, dx, ranks, round, steps, step-loop seconds, simulated s/h,
 # dt) and, per spacing and rank count, the median ratio new/plain of the simulated s/h.
-#   bench/vein_speed.sh [--rounds 3] [--dx "2e-4 1e-4"] [--ranks "1 2"] [--steps 400] [--out DIR]
+#   bench/vein_speed.sh [--rounds 3] [--dx "2e-4 1e-4"] [--ranks "1 2"] [--steps 400]
+#                       [--substeps N] [--out DIR]
 # --steps: the piece's length in steps of the plain step (each setting runs the same
-#   simulated time). Environment: DMHS_EXE (default build/dmhs; its commit is printed),
+#   simulated time). --substeps: the multi-rate step's -solid_substeps (default 0: chosen
+#   automatically, which the solids' fastest-mode limit keeps stable; 3 was the old
+#   fixed choice at 1e-4 m). Environment: DMHS_EXE (default build/dmhs; its commit is printed),
 #   DMHS_EXE_PLAIN (default the same: an older build for the plain step, to compare builds).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,6 +19,7 @@ rounds=3
 dxs="2e-4 1e-4"
 rankss="1 2"
 steps=400
+substeps=0
 out=""
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -23,12 +27,13 @@ while [ $# -gt 0 ]; do
     --dx) dxs="$2"; shift 2 ;;
     --ranks) rankss="$2"; shift 2 ;;
     --steps) steps="$2"; shift 2 ;;
+    --substeps) substeps="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "$0: unknown argument $1" >&2; exit 2 ;;
   esac
 done
-case "$rounds$steps" in *[!0-9]*) echo "$0: --rounds and --steps take whole numbers" >&2; exit 2 ;; esac
+case "$rounds$steps$substeps" in *[!0-9]*) echo "$0: --rounds, --steps and --substeps take whole numbers" >&2; exit 2 ;; esac
 exe="${DMHS_EXE:-$repo/build/dmhs}"
 exe_plain="${DMHS_EXE_PLAIN:-$exe}"
 for e in "$exe" "$exe_plain"; do
@@ -39,8 +44,6 @@ cd "$repo"
 # the plain step's dt at each spacing (input/vein.opts' automatic dt: the leaflets bind)
 plain_dt() { case "$1" in 1e-4) echo 5.06e-7 ;; 2e-4) echo 2.72e-6 ;; 4e-4) echo 5.35e-6 ;;
   *) echo "$0: --dx $1: no plain dt known (1e-4, 2e-4, 4e-4)" >&2; exit 2 ;; esac; }
-# sub-steps: at 1e-4 m the automatic choice (5) lets the leaflets ring, 3 do not
-substeps() { case "$1" in 1e-4) echo 3 ;; *) echo 0 ;; esac; }
 for dx in $dxs; do
   case "$dx" in 1e-4|2e-4|4e-4) ;; *) echo "$0: --dx $dx: no plain dt known (1e-4, 2e-4, 4e-4)" >&2; exit 2 ;; esac
 done
@@ -54,7 +57,7 @@ for dx in $dxs; do
     for ((r = 1; r <= rounds; r++)); do
       for setting in plain multirate; do
         if [ "$setting" = plain ]; then e="$exe_plain"; extra=(); else
-          e="$exe"; extra=(-solid_substeps "$(substeps "$dx")" -repulsion_substeps -solid_substeps_scheme respa); fi
+          e="$exe"; extra=(-solid_substeps "$substeps" -repulsion_substeps -solid_substeps_scheme respa); fi
         log="$out/$setting-$dx-np$ranks-$r.log"
         mpirun --oversubscribe --allow-run-as-root -n "$ranks" "$e" -options_file input/vein-run1.opts \
           -vein_dx "$dx" -t_end "$t_end" "${extra[@]}" -output_snapshots false -checkpoint_at_end false \
