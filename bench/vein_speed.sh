@@ -68,7 +68,7 @@ for dx in $dxs; do
         dt=$(grep -o '^dt = [0-9.e+-]*' "$log" | awk '{print $3}')
         rate=$(awk -v t="$t_end" -v l="$loop" 'BEGIN{printf "%.4g", t / l * 3600}')
         echo "$setting $dx $ranks $r $n $loop $rate ${dt:-fixed}" | tee -a "$results"
-        grep -o 'dmhs [0-9.]* (commit [0-9a-f-]*)' "$log" | head -1 >> "$out/commits.txt" || true
+        grep -o 'dmhs [0-9.]* (commit [0-9a-z-]*)' "$log" | head -1 >> "$out/commits.txt" || true
       done
     done
   done

@@ -73,6 +73,16 @@ add_test(NAME validation_intestine_snapshot_plot_uncovered
                  ${DMHS_INTESTINE_OUT}/quick --at 0,9 --out ${DMHS_INTESTINE_OUT}/snapshot-plot/uncovered.png)
 set_tests_properties(validation_intestine_snapshot_plot_uncovered PROPERTIES LABELS validation TIMEOUT 60
                      FIXTURES_REQUIRED intestine_quick)
+# scripts/post/intestine_pouring.py, the pouring mode's distribution (Table 3.2) beside a
+# run's pocket counts: exact on a made-up run, n/a beyond its rows and for alpha_T n/a, an
+# error when the rows end before one haustrum period; on the quick run alpha after one
+# haustrum period (at t0 + t_w + 2 t_w) from its own rows (test/validation/intestine_pouring.py).
+add_test(NAME validation_intestine_pouring
+         COMMAND ${DMHS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/validation/intestine_pouring.py
+                 --script ${PROJECT_SOURCE_DIR}/scripts/post/intestine_pouring.py
+                 --work ${DMHS_INTESTINE_OUT}/pouring --quick ${DMHS_INTESTINE_OUT}/quick)
+set_tests_properties(validation_intestine_pouring PROPERTIES LABELS validation TIMEOUT 60
+                     FIXTURES_REQUIRED intestine_quick)
 # The original wave against the new one (Fig. 3.12) on the quick case over
 # one whole wave (T_w = 0.54 s, to 0.57 s, ~20 s each on one core), red set
 # in pocket 1: both runs within the quick run's bounds, then
