@@ -8,8 +8,10 @@
 #
 # The state is run.json's status (completed, error, signal-checkpoint), "not started" without
 # a run.json, or for status "running":
-#   running   its pid is a live dmhs on this host; or, run on another host (where its pid
-#             cannot be looked at), its heartbeat is younger than two heartbeat intervals
+#   running   its pid is a live dmhs on this host (the program run.json's "executable" names,
+#             whatever its file is called; for a run.json without it, a program whose name
+#             starts with dmhs); or, run on another host (where its pid cannot be looked
+#             at), its heartbeat is younger than two heartbeat intervals
 #   stalled   its pid is a live dmhs on this host but the heartbeat is older than two
 #             intervals: hung, or stopped (kill -STOP)
 #   died      its pid is gone from this host (or is another program now), or, run on another
@@ -33,7 +35,7 @@ field() {
 }
 
 state_of() {
-  local dir=$1 status pid host heartbeat interval age="" now beat
+  local dir=$1 status pid host heartbeat interval age="" now beat exe comm
   [ -f "$dir/run.json" ] || { echo "not started"; return; }
   status=$(field "$dir" status)
   [ "$status" = running ] || { echo "${status:-unknown}"; return; }
@@ -47,7 +49,15 @@ state_of() {
   if [ -n "$age" ] && [ -n "$interval" ] && [ "$interval" != null ] &&
      awk -v a="$age" -v i="$interval" 'BEGIN { exit !(a > 2 * i + 1) }'; then stale=1; fi
   if [ -n "$host" ] && [ "$host" = "$(hostname)" ] && [[ "$pid" =~ ^[0-9]+$ ]]; then
-    if [ "$(ps -p "$pid" -o comm= 2>/dev/null)" = dmhs ]; then
+    # the kernel keeps a program's name to 15 characters (ps's comm)
+    exe=$(field "$dir" executable) comm=$(ps -p "$pid" -o comm= 2>/dev/null || true)
+    if [ -n "$exe" ] && [ "$exe" != null ]; then
+      exe=$(basename -- "$exe") && exe=${exe:0:15}
+    else
+      exe="dmhs*" # written before run.json named it: a program called dmhs or dmhs-<something>
+    fi
+    # shellcheck disable=SC2053 # a pattern on purpose
+    if [ -n "$comm" ] && [[ "$comm" == $exe ]]; then
       [ $stale = 1 ] && echo stalled || echo running
     else
       echo died

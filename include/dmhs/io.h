@@ -43,20 +43,21 @@ typedef struct io_state {
   char *restart_changes;                 /* what differed from the checkpoint's options, or NULL */
   char *restart_new_options; /* options the checkpoint's dmhs lacked, at their defaults, or NULL */
   /* state */
-  PetscBool restarted;           /* the state was read from restart_file */
-  double dt_options;             /* the options' dt, which a restart replaces by its own */
-  double restart_t;              /* t when this session's step loop started [s] */
-  PetscInt snapshot_index;       /* number of the next snapshot file */
-  double next_checkpoint_t;      /* [s] */
-  PetscInt last_checkpoint_step; /* -1 = none written by this session */
-  int stop_signal;               /* signal that stopped the run, 0 = none */
-  struct xdmf *xdmf;             /* rank 0: the snapshots indexed so far */
-  char *options;                 /* resolved options (PetscOptionsGetAll) */
-  char start_time[32];           /* ISO 8601, UTC */
-  char previous_status[32];      /* status in the run.json this run replaced ("" = none) */
-  char host[256];                /* rank 0's host name (run.json) */
-  double heartbeat_interval;     /* [s] the next heartbeat comes within this (0: unknown) */
-  PetscBool heartbeat_failed;    /* the last heartbeat could not be written (said then) */
+  PetscBool restarted;                 /* the state was read from restart_file */
+  double dt_options;                   /* the options' dt, which a restart replaces by its own */
+  double restart_t;                    /* t when this session's step loop started [s] */
+  PetscInt snapshot_index;             /* number of the next snapshot file */
+  double next_checkpoint_t;            /* [s] */
+  PetscInt last_checkpoint_step;       /* -1 = none written by this session */
+  int stop_signal;                     /* signal that stopped the run, 0 = none */
+  struct xdmf *xdmf;                   /* rank 0: the snapshots indexed so far */
+  char *options;                       /* resolved options (PetscOptionsGetAll) */
+  char start_time[32];                 /* ISO 8601, UTC */
+  char previous_status[32];            /* status in the run.json this run replaced ("" = none) */
+  char host[256];                      /* rank 0's host name (run.json) */
+  char executable[PETSC_MAX_PATH_LEN]; /* rank 0's program file (run.json), or "" */
+  double heartbeat_interval;           /* [s] the next heartbeat comes within this (0: unknown) */
+  PetscBool heartbeat_failed;          /* the last heartbeat could not be written (said then) */
   PetscBool run_json_started;
   PetscBool halo_known; /* halo holds the sizes of the last build (the run reached its end) */
   halo_stats halo;      /* run.json "halo" */

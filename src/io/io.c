@@ -9,7 +9,7 @@
  * run.json and stop cleanly.
  *
  * run.json (rank 0, rewritten atomically): dmhs_version, commit (build_info.h),
- * scene, ranks, host and pid (rank 0's), options, restart_from, start, end,
+ * scene, ranks, host, pid and executable (rank 0's), options, restart_from, start, end,
  * heartbeat (ISO 8601 UTC: the time of this write; a live run writes one at
  * every progress line and checkpoint) and heartbeat_interval (the wall seconds
  * within which the next comes, or null), status ("running", "completed",
@@ -187,7 +187,12 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   io_json_string(f, s->scene_name);
   fprintf(f, ",\n  \"ranks\": %d,\n  \"host\": ", (int)s->size);
   io_json_string(f, s->io->host);
-  fprintf(f, ",\n  \"pid\": %ld,\n  \"options\": ", (long)getpid());
+  fprintf(f, ",\n  \"pid\": %ld,\n  \"executable\": ", (long)getpid());
+  if (s->io->executable[0])
+    io_json_string(f, s->io->executable);
+  else
+    fprintf(f, "null");
+  fprintf(f, ",\n  \"options\": ");
   io_json_string(f, s->io->options);
   fprintf(f, ",\n  \"restart_from\": ");
   if (s->io->restart_file[0])
@@ -310,6 +315,10 @@ PetscErrorCode io_setup(sim *s) {
   if (s->rank == 0 && gethostname(io->host, sizeof(io->host)) != 0)
     PetscCall(PetscSNPrintf(io->host, sizeof(io->host), "unknown")); /* run.json says so */
   io->host[sizeof(io->host) - 1] = 0;
+  if (s->rank == 0) { /* which program the pid is (scripts/run_state.sh): Linux names it here */
+    const ssize_t n = readlink("/proc/self/exe", io->executable, sizeof(io->executable) - 1);
+    io->executable[n > 0 ? n : 0] = 0;
+  }
   if (s->rank == 0)
     io_previous_status(s->io->output_dir, io->previous_status, sizeof(io->previous_status));
   PetscCall(io_run_json(s, "running", PETSC_FALSE));

@@ -6,7 +6,9 @@
 #  3. stopped (SIGSTOP) past two heartbeat intervals: stalled;
 #  4. killed (SIGKILL): died, also in vein_study.sh --status;
 #  5. run on another host (no pid to look at): running while the heartbeat is fresh, died
-#     once it is older than two intervals; a completed run and an empty directory.
+#     once it is older than two intervals; a completed run and an empty directory;
+#  6. a copy of the program under another name (run.json's executable): running, and
+#     vein_study.sh leaves it alone; without run.json's executable, a name not dmhs*: died.
 # Usage: run_state.sh REPO DMHS PYTHON WORKDIR
 set -euo pipefail
 repo=$1 EXE=$2 PY=$3 W=$4
@@ -100,4 +102,21 @@ elsewhere 2000-01-01T00:00:00Z
 mkdir -p "$W/empty"
 [ "$(state "$W/empty")" = "not started" ] || fail "an empty directory: '$(state "$W/empty")'"
 echo "5. another host, completed, not started: OK"
+
+cp "$EXE" "$W/solver-copy"
+run=$W/study/run5
+"$W/solver-copy" "${QUICK[@]}" -t_end 100 -progress_wall_interval 0.5 -output_dir "$run" > "$W/copy.log" 2>&1 &
+pid=$!
+for _ in $(seq 100); do [ -f "$run/run.json" ] && break; sleep 0.1; done
+grep -qF "\"executable\": \"$W/solver-copy\"," "$run/run.json" || fail "run.json's executable: $(grep executable "$run/run.json")"
+[ "$(state "$run")" = running ] || fail "a live run of a renamed copy: '$(state "$run")', expected running"
+rc=0
+DMHS_EXE="$W/solver-copy" bash "$repo/scripts/vein_study.sh" --ids 5 --study none --out "$W/study" > "$W/study5.log" 2>&1 || rc=$?
+grep -q "run5 is running, not started again" "$W/study5.log" || fail "vein_study.sh on the copy: $(cat "$W/study5.log")"
+mkdir -p "$W/legacy" && grep -v '^  "executable": ' "$run/run.json" > "$W/legacy/run.json"
+[ "$(state "$W/legacy")" = died ] || fail "run.json without executable, a program not named dmhs*: '$(state "$W/legacy")'"
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null || true
+pid=""
+echo "6. a renamed copy: running, left alone: OK"
 echo "run state: OK"
