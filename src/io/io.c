@@ -119,6 +119,14 @@ static void io_json_string(FILE *f, const char *v) {
   fputc('"', f);
 }
 
+/* v as a JSON string, or null when v is NULL or empty */
+static void io_json_string_or_null(FILE *f, const char *v) {
+  if (v && v[0])
+    io_json_string(f, v);
+  else
+    fprintf(f, "null");
+}
+
 /* Writes text to path through path.tmp and a rename; when that fails (disk
  * full: no room for a second copy) the old file is overwritten in place, its
  * blocks already allocated, padded with blanks to its old length. 0 or an errno. */
@@ -188,35 +196,20 @@ static int io_write_run_json(const sim *s, const char *status, const char *messa
   fprintf(f, ",\n  \"ranks\": %d,\n  \"host\": ", (int)s->size);
   io_json_string(f, s->io->host);
   fprintf(f, ",\n  \"pid\": %ld,\n  \"executable\": ", (long)getpid());
-  if (s->io->executable[0])
-    io_json_string(f, s->io->executable);
-  else
-    fprintf(f, "null");
+  io_json_string_or_null(f, s->io->executable);
   fprintf(f, ",\n  \"options\": ");
   io_json_string(f, s->io->options);
   fprintf(f, ",\n  \"restart_from\": ");
-  if (s->io->restart_file[0])
-    io_json_string(f, s->io->restart_file);
-  else
-    fprintf(f, "null");
+  io_json_string_or_null(f, s->io->restart_file);
   if (s->io->restart_file[0]) {
     fprintf(f, ",\n  \"restart_allow_change\": %s,\n  \"restart_changes\": ",
             s->io->restart_allow_change ? "true" : "false");
-    if (s->io->restart_changes)
-      io_json_string(f, s->io->restart_changes);
-    else
-      fprintf(f, "null");
+    io_json_string_or_null(f, s->io->restart_changes);
     fprintf(f, ",\n  \"restart_new_options\": ");
-    if (s->io->restart_new_options)
-      io_json_string(f, s->io->restart_new_options);
-    else
-      fprintf(f, "null");
+    io_json_string_or_null(f, s->io->restart_new_options);
   }
   fprintf(f, ",\n  \"previous_status\": ");
-  if (s->io->previous_status[0])
-    io_json_string(f, s->io->previous_status);
-  else
-    fprintf(f, "null");
+  io_json_string_or_null(f, s->io->previous_status);
   fprintf(f, ",\n  \"start\": ");
   io_json_string(f, s->io->start_time);
   io_now_iso(now, sizeof(now));
