@@ -27,6 +27,7 @@ typedef struct bond_params {
   double rmax[TOPOLOGY_MAX_TYPES]; /* nonlinear only: largest |r - r0| [m] */
   PetscInt n_k, n_r0, n_rmax;      /* values given on the command line (0 = scene default) */
   double m_min;                    /* smallest mass of a moving bonded particle [kg] */
+  double damping;                  /* harmonic only: the dashpots' damping ratio zeta [1] */
 } bond_params;
 
 PetscErrorCode bond_harmonic_module_create(module **m);
@@ -38,6 +39,7 @@ typedef struct harmonic_bonds {
   const void *owner;
   const double *k;  /* [TOPOLOGY_MAX_TYPES] J/m^2 */
   const double *r0; /* [TOPOLOGY_MAX_TYPES] m, or NULL */
+  double damping;   /* damping ratio zeta of each bond's dashpot (dashpot_iact.h), 0 = none */
 } harmonic_bonds;
 /* Adds the law's accelerations to a. */
 PetscErrorCode bond_harmonic_forces(struct sim *s, const harmonic_bonds *set);

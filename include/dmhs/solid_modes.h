@@ -39,10 +39,14 @@ PetscErrorCode solid_jacobian_add(solid_jacobian *J, PetscInt p, PetscInt q, con
  * over all ranks (0 when no module gives blocks). Collective. */
 PetscErrorCode solid_modes_omega_bound(struct sim *s, double *omega);
 
+/* the default of -solid_mode_dt_factor */
 #define SOLID_MODES_LIMIT 1.25
 
-/* With sub-steps on: appends the limit "solid fastest mode", 1.25/omega,
- * which bounds dt itself (not the sub-step). Collective. */
+/* With sub-steps on: appends the limit "solid fastest mode", f/omega with f =
+ * s->substeps.mode_factor (-solid_mode_dt_factor, default 1.25; 0 leaves the
+ * limit out), which bounds dt itself (not the sub-step). Dashpots on the
+ * bonds and angles (-bond_damping, -angle_damping) outgrow the resonance's
+ * pumping and let f rise (doc/stability.md). Collective. */
 PetscErrorCode solid_modes_add_limit(struct sim *s, struct dt_limits *l);
 
 #endif

@@ -29,6 +29,7 @@ typedef struct substep_plan {
    * on the sub-steps: half at each end of the step (r-RESPA) or held at their start-of-step
    * value on every sub-step */
   PetscBool respa;
+  double mode_factor; /* -solid_mode_dt_factor: dt <= mode_factor/omega (solid_modes.h) */
 } substep_plan;
 
 /* Before the step's first kick: marks the rows that move on its sub-steps

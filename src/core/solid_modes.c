@@ -102,15 +102,15 @@ PetscErrorCode solid_modes_omega_bound(sim *s, double *omega) {
 PetscErrorCode solid_modes_add_limit(sim *s, dt_limits *l) {
   double omega;
   PetscFunctionBeginUser;
-  if (!s->substeps.on)
+  const double factor = s->substeps.mode_factor;
+  if (!s->substeps.on || !(factor > 0))
     PetscFunctionReturn(0);
   PetscCall(solid_modes_omega_bound(s, &omega));
   if (omega > 0) {
     char formula[96];
     PetscCall(PetscSNPrintf(formula, sizeof(formula),
-                            "%g/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx",
-                            SOLID_MODES_LIMIT));
-    PetscCall(dt_limits_add(l, "solid fastest mode", formula, SOLID_MODES_LIMIT / omega));
+                            "%g/omega, omega: Gershgorin bound of the solids' M^-1 dF/dx", factor));
+    PetscCall(dt_limits_add(l, "solid fastest mode", formula, factor / omega));
   }
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,9 @@
 /* Solid sub-cycling (see substep.h). Bitwise rank invariant like the step it
  * refines: the sub-steps touch owned rows that move on them only (marked at the
- * step's start from the state alone), and the ghosts' positions are refreshed
- * before every evaluation of the sub-cycled forces. */
+ * step's start from the state alone), and the ghosts' positions (and velocities,
+ * when a dashpot reads them) are refreshed before every evaluation of the
+ * sub-cycled forces. */
+#include <string.h>
 #include "dmhs/sim.h"
 #include "dmhs/substep.h"
 #include "dmhs/halo.h"
@@ -40,7 +42,14 @@ PetscErrorCode substep_mark_members(sim *s) {
 PetscErrorCode substep_solids(sim *s) {
   particles *ps = &s->ps;
   const PetscInt *moves = ps->substepped;
-  static const char *const positions[] = {"x"};
+  static const char *const moved[] = {"x", "v"};
+  /* positions, and the velocities when a sub-cycled module reads them (dashpots) */
+  int n_moved = 1;
+  for (int m = 0; m < s->n_modules; m++)
+    if (substep_internal(s->modules[m]))
+      for (const char *const *r = s->modules[m]->ghost_reads; r && *r; r++)
+        if (!strcmp(*r, "v"))
+          n_moved = 2;
   const PetscInt n = s->substeps.n;
   const double h = s->dt / (double)n, half = 0.5 * h, half_dt = 0.5 * s->dt;
   /* with one sub-step both schemes are the plain step, written as it is */
@@ -65,7 +74,7 @@ PetscErrorCode substep_solids(sim *s) {
     }
     if (sub == n - 1)
       break; /* the step's force evaluation gives the last one */
-    PetscCall(halo_forward(&s->hal, ps, positions, 1));
+    PetscCall(halo_forward(&s->hal, ps, moved, n_moved));
     PetscCall(substep_internal_forces(s));
     /* the second half kick of this sub-step and the first of the next: the sub-cycled
      * forces, and held, the rest too */

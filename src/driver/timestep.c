@@ -22,6 +22,7 @@ PetscErrorCode timestep_set_from_options(sim *s, timestep *ts) {
   ts->substeps_option = 1;
   s->substeps.n = 1;
   s->substeps.respa = PETSC_FALSE;
+  s->substeps.mode_factor = SOLID_MODES_LIMIT;
   ts->safety = DT_SAFETY_DEFAULT;
   ts->growth = DT_GROWTH_DEFAULT;
   ts->dt_min = 0;
@@ -55,7 +56,17 @@ PetscErrorCode timestep_set_from_options(sim *s, timestep *ts) {
       "sub-step, as SPHinXsys)",
       NULL, substep_scheme_names, (PetscEnum)scheme, (PetscEnum *)&scheme, NULL));
   s->substeps.respa = scheme == SUBSTEP_RESPA ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(options_read_real(
+      "-solid_mode_dt_factor",
+      "With sub-steps: dt <= this / omega, omega the Gershgorin bound of the solids' fastest "
+      "mode [1] (0 = no such limit; the default stays clear of the multiple-time-step "
+      "resonances; with -bond_damping and -angle_damping 0.01, 2.5 was measured quiet: "
+      "doc/stability.md)",
+      NULL, s->substeps.mode_factor, &s->substeps.mode_factor, NULL));
   PetscOptionsEnd();
+  PetscCheck(s->substeps.mode_factor >= 0, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-solid_mode_dt_factor must be >= 0 (got %g; 0 = no fastest-mode limit)",
+             s->substeps.mode_factor);
   PetscCheck(ts->substeps_option >= 0 && ts->substeps_option <= SUBSTEPS_MAX, s->comm,
              PETSC_ERR_ARG_OUTOFRANGE,
              "-solid_substeps must be in [0, %d] (got %" PetscInt_FMT "; 1 = off, 0 = automatic)",

@@ -3,7 +3,8 @@
  * (atan2 form, exact near 0 and pi) in angle_iact.h.
  * Time-step limit: a transverse displacement u of an arm of length r turns the
  * angle by u/r, so the angle acts as a spring k = U''/r^2 = 2 k_a/r^2 on it;
- * limit SPRING_DT_FACTOR sqrt(m/k) with r the shortest current arm. */
+ * limit SPRING_DT_FACTOR sqrt(m/k) with r the shortest current arm.
+ * An optional dashpot on each angle (-angle_damping, dashpot_iact.h). */
 #include <math.h>
 #include <string.h>
 #include "dmhs/sim.h"
@@ -13,6 +14,7 @@
 #include "dmhs/events.h"
 #include "dmhs/solid_modes.h"
 #include "angle_iact.h"
+#include "dashpot_iact.h"
 
 typedef struct {
   double k[TOPOLOGY_MAX_TYPES];          /* [J] */
@@ -20,6 +22,7 @@ typedef struct {
   double theta0[TOPOLOGY_MAX_TYPES];     /* [rad] */
   PetscInt n_k, n_theta0;
   double m_min;
+  double damping; /* the dashpots' damping ratio zeta [1] */
 } angle_data;
 
 static module *angle_find(sim *s) {
@@ -70,7 +73,18 @@ static PetscErrorCode angle_set_from_options(module *self, sim *s) {
                                     "Rest angle theta0 [deg], one value or one per angle type",
                                     NULL, d->theta0_deg, &n, &set));
   d->n_theta0 = set ? n : 0;
+  PetscCall(options_read_real(
+      "-angle_damping",
+      "Damping ratio zeta of a dashpot on every angle [1] (0 = none; 0.01 lets the sub-cycled "
+      "solids take a step past their fastest-mode resonance: doc/stability.md)",
+      NULL, d->damping, &d->damping, NULL));
   PetscOptionsEnd();
+  PetscCheck(d->damping >= 0 && d->damping < 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-angle_damping must lie in [0, 1) (got %g)", d->damping);
+  /* the dashpot reads the partners' velocities */
+  static const char *const reads_xv[] = {"x", "v", NULL};
+  if (d->damping > 0)
+    self->ghost_reads = reads_xv;
   /* the far end of an angle is two bonds from its owned anchor */
   self->reach = 0;
   for (int m = 0; m < s->n_modules; m++)
@@ -111,8 +125,10 @@ static inline void angle_tally(const angle_data *d, const sim *s, int force, int
   const PetscInt(*restrict angle)[3] = (const PetscInt(*)[3])t->angle;
   const PetscInt *restrict type = t->angle_ltype;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
+  const double(*restrict v)[2] = (const double(*)[2])ps->v;
   const double *restrict mass = ps->mass;
   const double *restrict K = d->k, *restrict TH0 = d->theta0;
+  const double zeta = d->damping;
   double(*restrict a)[2] = ps->a;
   double local = 0;
   for (PetscInt q = 0; q < na; q++) {
@@ -121,6 +137,11 @@ static inline void angle_tally(const angle_data *d, const sim *s, int force, int
     const double rb[2] = {x[k][0] - x[j][0], x[k][1] - x[j][1]};
     double fi[2], fk[2];
     const double u = angle_harmonic_iact(K[ty], TH0[ty], ra, rb, fi, fk);
+    if (zeta > 0 && (force || virial)) {
+      const double va[2] = {v[i][0] - v[j][0], v[i][1] - v[j][1]};
+      const double vb[2] = {v[k][0] - v[j][0], v[k][1] - v[j][1]};
+      angle_dashpot_iact(zeta, 2.0 * K[ty], mass[i], mass[j], mass[k], ra, rb, va, vb, fi, fk);
+    }
     if (force) {
       const double mi = 1.0 / mass[i], mj = 1.0 / mass[j], mk = 1.0 / mass[k];
       a[i][0] += fi[0] * mi;
@@ -243,6 +264,9 @@ static PetscErrorCode angle_view(module *self, sim *s, PetscViewer v) {
     PetscCall(
         PetscViewerASCIIPrintf(v, "  angle type %" PetscInt_FMT ": k_a = %g J, theta0 = %g deg\n",
                                t, d->k[t], d->theta0_deg[t]));
+  if (d->damping > 0)
+    PetscCall(
+        PetscViewerASCIIPrintf(v, "  dashpots on the angles: damping ratio %g\n", d->damping));
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,6 @@
 /* Module bond_harmonic: U = K (r - r0)^2 per bond (doc/theory.md), K [J/m^2] and r0 [m]
- * per bond type (-bond_k, -bond_r0). Pair arithmetic in bond_iact.h. It claims the
+ * per bond type (-bond_k, -bond_r0), with an optional dashpot on each bond's length
+ * (-bond_damping, dashpot_iact.h). Pair arithmetic in bond_iact.h. It claims the
  * scene's bond types at setup; types another module claimed (the clots',
  * agglomeration.c) are left to that module, which applies the same law to them through
  * bond_harmonic_forces with each bond's own rest length.
@@ -11,6 +12,7 @@
 #include "dmhs/events.h"
 #include "dmhs/solid_modes.h"
 #include "bond_iact.h"
+#include "dashpot_iact.h"
 #include "virial_iact.h"
 
 static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
@@ -20,7 +22,18 @@ static PetscErrorCode bond_harmonic_set_from_options(module *self, sim *s) {
   PetscCall(bond_options_k_r0(
       PetscOptionsObject, p,
       "Bond stiffness K [J/m^2] (U = K (r-r0)^2), one value or one per bond type"));
+  PetscCall(options_read_real(
+      "-bond_damping",
+      "Damping ratio zeta of a dashpot on every bond's length [1] (0 = none; 0.01 lets the "
+      "sub-cycled solids take a step past their fastest-mode resonance: doc/stability.md)",
+      NULL, p->damping, &p->damping, NULL));
   PetscOptionsEnd();
+  PetscCheck(p->damping >= 0 && p->damping < 1, s->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-bond_damping must lie in [0, 1) (got %g)", p->damping);
+  /* the dashpot reads the partners' velocities */
+  static const char *const reads_xv[] = {"x", "v", NULL};
+  if (p->damping > 0)
+    self->ghost_reads = reads_xv;
   double r0max = 0;
   for (int t = 0; t < TOPOLOGY_MAX_TYPES; t++)
     r0max = PetscMax(r0max, p->r0[t]);
@@ -52,8 +65,10 @@ static inline void harmonic_tally(const sim *s, const harmonic_bonds *set, int f
   const PetscInt(*restrict bond)[2] = (const PetscInt(*)[2])t->bond;
   const PetscInt *restrict type = t->bond_ltype;
   const double(*restrict x)[2] = (const double(*)[2])ps->x;
+  const double(*restrict v)[2] = (const double(*)[2])ps->v;
   const double *restrict mass = ps->mass;
   const double *restrict K = set->k;
+  const double zeta = set->damping;
   double(*restrict a)[2] = ps->a;
   const void *const *restrict owner = t->bond_owner;
   double local = 0;
@@ -64,7 +79,11 @@ static inline void harmonic_tally(const sim *s, const harmonic_bonds *set, int f
     const double d[2] = {x[i][0] - x[j][0], x[i][1] - x[j][1]};
     const double r = sqrt(d[0] * d[0] + d[1] * d[1]), r0 = HARMONIC_R0(set, t, b, ty);
     if (force || virial) {
-      const double fr = bond_harmonic_iact(K[ty], r0, r);
+      double fr = bond_harmonic_iact(K[ty], r0, r);
+      if (zeta > 0) {
+        const double dv[2] = {v[i][0] - v[j][0], v[i][1] - v[j][1]};
+        fr += bond_dashpot_iact(bond_dashpot_gamma(zeta, 2.0 * K[ty], mass[i], mass[j]), d, r, dv);
+      }
       bond_pair_apply(a, W, mass, i, j, fr, d, force, virial);
     }
     if (energy)
@@ -98,7 +117,7 @@ PetscErrorCode bond_harmonic_energy_of(sim *s, const harmonic_bonds *set, double
 /* the module's bonds: the types it claimed, K and r0 per type */
 static harmonic_bonds bond_harmonic_set(const module *self) {
   const bond_params *p = self->data;
-  return (harmonic_bonds){.owner = self, .k = p->k, .r0 = p->r0};
+  return (harmonic_bonds){.owner = self, .k = p->k, .r0 = p->r0, .damping = p->damping};
 }
 
 static PetscErrorCode bond_harmonic_compute(module *self, sim *s) {
@@ -161,6 +180,9 @@ static PetscErrorCode bond_harmonic_view(module *self, sim *s, PetscViewer v) {
       v,
       "bond_harmonic: %" PetscInt64_FMT " bonds, U = K (r - r0)^2; 1-2/1-3 partners %s pair sums\n",
       s->topo->n_bonds_global, s->topo->special_include ? "included in" : "excluded from"));
+  if (p->damping > 0)
+    PetscCall(PetscViewerASCIIPrintf(v, "  dashpots on the bonds' lengths: damping ratio %g\n",
+                                     p->damping));
   for (PetscInt t = 0; t < s->topo->n_bond_types; t++)
     PetscCall(PetscViewerASCIIPrintf(v, "  bond type %" PetscInt_FMT ": K = %g J/m^2, r0 = %g m\n",
                                      t, p->k[t], p->r0[t]));

@@ -19,6 +19,7 @@
 #include "dmhs/angle_harmonic.h"
 #include "dmhs/repulsion.h"
 #include "dmhs/substep.h"
+#include "dmhs/solid_modes.h"
 #include "dmhs/fields.h"
 
 #define OK(call) assert_int_equal((call), 0)
@@ -80,6 +81,7 @@ static inline double fixture_energy(sim *s, double P[2]) {
 static inline void fixture_substeps(sim *s, PetscInt n) {
   s->substeps.n = n;
   s->substeps.on = n != 1 ? PETSC_TRUE : PETSC_FALSE;
+  s->substeps.mode_factor = SOLID_MODES_LIMIT;
   fields_reset();
   if (s->substeps.on) {
     OK(fields_enable("a_hold"));

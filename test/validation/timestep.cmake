@@ -99,6 +99,30 @@ add_test(NAME timestep_substeps_dt_csv
           --same ${DMHS_TS_OUT}/substeps_np3)
 set_tests_properties(timestep_substeps_rank_invariance timestep_substeps_dt_csv PROPERTIES LABELS validation
   TIMEOUT 60 FIXTURES_REQUIRED timestep_substeps)
+# dashpots on the bonds and angles read the partners' velocities: the ghosts' must be current on
+# every sub-step for the ranks to agree (the cantilever: the ranks' cut crosses the beam; with the
+# velocities left as the step's start had them, 2 ranks' velocities differ by 3.7e-3)
+foreach(n 1 2 3)
+  add_test(NAME timestep_damped_np${n}
+    COMMAND ${DMHS_MPIRUN} -n ${n} ${DMHS_EXE} -options_file ${PROJECT_SOURCE_DIR}/input/cantilever.opts -quiet
+            -t_end 0.002 -solid_substeps 4 -bond_damping 0.01 -angle_damping 0.01
+            -output_dir ${DMHS_TS_OUT}/damped_np${n} -dump_final ${DMHS_TS_OUT}/damped_np${n}.csv)
+  set_tests_properties(timestep_damped_np${n} PROPERTIES LABELS "validation;mpi" PROCESSORS ${n} TIMEOUT 300
+    FIXTURES_SETUP timestep_damped)
+endforeach()
+add_test(NAME timestep_damped_rank_invariance
+  COMMAND ${DMHS_PYTHON} ${PROJECT_SOURCE_DIR}/test/mpi/compare_dumps.py --tol 0 ${DMHS_TS_OUT}/damped_np1.csv
+          ${DMHS_TS_OUT}/damped_np2.csv ${DMHS_TS_OUT}/damped_np3.csv)
+set_tests_properties(timestep_damped_rank_invariance PROPERTIES LABELS validation TIMEOUT 60
+  FIXTURES_REQUIRED timestep_damped)
+add_test(NAME timestep_bad_damping COMMAND ${DMHS_EXPECT_FAIL} "-angle_damping must lie in \\[0, 1\\) \\(got 1.5\\)" --
+  ${DMHS_EXE} -options_file ${PROJECT_SOURCE_DIR}/input/cantilever.opts -angle_damping 1.5
+  -output_dir ${DMHS_TS_OUT}/bad_damping)
+add_test(NAME timestep_bad_mode_factor COMMAND ${DMHS_EXPECT_FAIL}
+  "-solid_mode_dt_factor must be >= 0 \\(got -1[.]?; 0 = no fastest-mode limit\\)" --
+  ${DMHS_EXE} -options_file ${PROJECT_SOURCE_DIR}/input/cantilever.opts -solid_substeps 4
+  -solid_mode_dt_factor -1 -output_dir ${DMHS_TS_OUT}/bad_mode_factor)
+set_tests_properties(timestep_bad_damping timestep_bad_mode_factor PROPERTIES LABELS validation TIMEOUT 60)
 # (the flap's restart tests, io_restart_flap_*, run the shipped input: sub-steps)
 dmhs_restart_test(io_restart_cantilever_substeps 1 1 2 0.002 -options_file
                   ${PROJECT_SOURCE_DIR}/input/cantilever.opts -output_interval 1e-4 -solid_substeps 4)
